@@ -1,0 +1,66 @@
+package org.triad.dsl.linking;
+
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EReference;
+import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.diagnostics.DiagnosticMessage;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
+import org.triad.dsl.triad.Actor;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.TriadPackage;
+import org.triad.dsl.validation.CommonIssueCodes;
+
+/**
+ * Unresolved names get a stable code per kind of element (unknown type, actor, property, goal,
+ * parameter, ...) and a message a model author can act on.
+ */
+public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
+	private static final TriadPackage P = TriadPackage.eINSTANCE;
+
+	@Override
+	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
+		EReference ref = context.getReference();
+		String name = context.getLinkText();
+		EClass target = ref.getEReferenceType();
+		if (ref == P.getPropertyCall_Property() && context.getContext() instanceof PropertyCall call && call.getActor() == null
+				&& EcoreUtil2.getContainerOfType(call, Actor.class) == null) {
+			return error(CommonIssueCodes.UNQUALIFIED_CALL, "property call '" + name
+					+ "' must name its actor here, e.g. 'Robot." + name + "(...)': only actions of an actor may omit it");
+		}
+		if (ref == P.getPropertyCall_Property()) {
+			String owner = context.getContext() instanceof PropertyCall call && call.getActor() != null && !call.getActor().eIsProxy()
+					? "actor '" + call.getActor().getName() + "'" : "this actor";
+			return error(CommonIssueCodes.UNKNOWN_PROPERTY, "unknown property '" + name + "' of " + owner);
+		}
+		if (ref == P.getValueRef_Value()) {
+			return error(CommonIssueCodes.UNKNOWN_VALUE, "unknown parameter or object '" + name + "'");
+		}
+		if (ref == P.getDomainModel_Domain()) {
+			return error(CommonIssueCodes.UNKNOWN_DOMAIN, "unknown class diagram '" + name + "' (no 'classdiagram " + name + "' in this application)");
+		}
+		if (target == P.getDomainType() || target == P.getDomainClass()) {
+			return error(CommonIssueCodes.UNKNOWN_TYPE, "unknown type '" + name + "'");
+		}
+		if (target == P.getActor()) {
+			return error(CommonIssueCodes.UNKNOWN_ACTOR, "unknown actor '" + name + "'");
+		}
+		if (target == P.getGoal()) {
+			return error(CommonIssueCodes.UNKNOWN_GOAL, "unknown goal '" + name + "'");
+		}
+		if (target == P.getEnumeration()) {
+			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown enumeration '" + name + "'");
+		}
+		if (target == P.getEnumLiteral()) {
+			return error(CommonIssueCodes.UNKNOWN_LITERAL, "unknown enumeration literal '" + name + "'");
+		}
+		if (target == P.getAttribute()) {
+			return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "unknown attribute '" + name + "'");
+		}
+		return error(CommonIssueCodes.UNKNOWN_NAME, "unknown " + target.getName() + " '" + name + "'");
+	}
+
+	private static DiagnosticMessage error(String code, String message) {
+		return new DiagnosticMessage(message, Severity.ERROR, code);
+	}
+}

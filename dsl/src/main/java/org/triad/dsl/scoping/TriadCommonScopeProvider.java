@@ -1,0 +1,79 @@
+package org.triad.dsl.scoping;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EReference;
+import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.scoping.IScope;
+import org.eclipse.xtext.scoping.Scopes;
+import org.triad.dsl.triad.Actor;
+import org.triad.dsl.triad.AttributeAssignment;
+import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.Enumeration;
+import org.triad.dsl.triad.ObjectDeclaration;
+import org.triad.dsl.triad.Parameterized;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.Situation;
+import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.triad.TriadPackage;
+import org.triad.dsl.typing.TriadTypeSystem;
+
+/**
+ * Scoping shared by all Triad languages: names inside a model element (properties of an actor,
+ * literals of an enumeration, parameters, a situation's objects, a class's attributes) are
+ * resolved locally; everything else (types, actors, goals) globally, see
+ * {@link DomainImportScopeProvider}.
+ */
+public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
+	private static final TriadPackage P = TriadPackage.eINSTANCE;
+
+	@Override
+	public IScope getScope(EObject context, EReference reference) {
+		if (reference == P.getPropertyCall_Property() && context instanceof PropertyCall call) {
+			return propertyScope(call);
+		}
+		if (reference == P.getEnumLiteralRef_Literal() && context instanceof EnumLiteralRef ref) {
+			Enumeration e = ref.getEnumeration();
+			return e == null || e.eIsProxy() ? IScope.NULLSCOPE : Scopes.scopeFor(e.getLiterals());
+		}
+		if (reference == P.getValueRef_Value()) {
+			return valueScope(context);
+		}
+		if (reference == P.getAttributeAssignment_Attribute()) {
+			return attributeScope(context);
+		}
+		return super.getScope(context, reference);
+	}
+
+	private IScope propertyScope(PropertyCall call) {
+		Actor actor = call.getActor();
+		if (actor == null) {
+			// unqualified calls mean the enclosing actor's own properties
+			actor = EcoreUtil2.getContainerOfType(call, Actor.class);
+		}
+		return actor == null || actor.eIsProxy() ? IScope.NULLSCOPE : Scopes.scopeFor(actor.getProperties());
+	}
+
+	private IScope valueScope(EObject context) {
+		Situation situation = EcoreUtil2.getContainerOfType(context, Situation.class);
+		if (situation != null) {
+			List<SituationObject> objects = new ArrayList<>();
+			for (ObjectDeclaration d : situation.getDeclarations()) {
+				objects.addAll(d.getObjects());
+			}
+			return Scopes.scopeFor(objects);
+		}
+		Parameterized owner = EcoreUtil2.getContainerOfType(context, Parameterized.class);
+		return owner == null ? IScope.NULLSCOPE : Scopes.scopeFor(owner.getParameters());
+	}
+
+	private IScope attributeScope(EObject context) {
+		ObjectDeclaration declaration = EcoreUtil2.getContainerOfType(context, ObjectDeclaration.class);
+		if (declaration == null || declaration.getType() == null || declaration.getType().eIsProxy()) {
+			return IScope.NULLSCOPE;
+		}
+		return Scopes.scopeFor(TriadTypeSystem.allAttributes(declaration.getType()));
+	}
+}

@@ -1,0 +1,46 @@
+package org.triad.dsl.validation;
+
+/**
+ * Stable codes of diagnostics shared by every Triad language: syntax, unresolved names,
+ * expressions and application-wide rules. Codes never change once published; a rule that goes
+ * away leaves its code unused.
+ */
+public final class CommonIssueCodes {
+	private CommonIssueCodes() {
+	}
+
+	public static final String SYNTAX = "syntax";
+
+	public static final String UNKNOWN_DOMAIN = "link.unknown-domain";
+	public static final String UNKNOWN_TYPE = "link.unknown-type";
+	public static final String UNKNOWN_ACTOR = "link.unknown-actor";
+	public static final String UNKNOWN_PROPERTY = "link.unknown-property";
+	public static final String UNKNOWN_GOAL = "link.unknown-goal";
+	public static final String UNKNOWN_VALUE = "link.unknown-parameter";
+	public static final String UNKNOWN_ENUMERATION = "link.unknown-enumeration";
+	public static final String UNKNOWN_LITERAL = "link.unknown-literal";
+	public static final String UNKNOWN_ATTRIBUTE = "link.unknown-attribute";
+	public static final String UNKNOWN_NAME = "link.unknown-name";
+	/** A property call outside an actor that does not name the actor. */
+	public static final String UNQUALIFIED_CALL = "expr.unqualified-call";
+
+	/** An operand of {@code &&}, {@code ||} or {@code !} that is not Boolean. */
+	public static final String NOT_BOOLEAN_OPERAND = "expr.not-boolean";
+	/** A condition (precondition, postcondition, goal situation, fact) that is not Boolean. */
+	public static final String CONDITION_NOT_BOOLEAN = "expr.condition-not-boolean";
+	/** {@code ==}/{@code !=} between values of incompatible types. */
+	public static final String INCOMPATIBLE_OPERANDS = "expr.incompatible-operands";
+	/** An ordering comparison on values that are not numbers. */
+	public static final String NOT_NUMERIC = "expr.not-numeric";
+	/** A property call with the wrong number of arguments. */
+	public static final String ARGUMENT_COUNT = "expr.argument-count";
+	/** A property call argument whose type does not fit the parameter. */
+	public static final String ARGUMENT_TYPE = "expr.argument-type";
+
+	/** Two parameters of one property, action, goal or task with the same name. */
+	public static final String DUPLICATE_PARAMETER = "common.duplicate-parameter";
+	/** Two elements of the application (class diagrams, actors, goals, tasks, situations) with the same name. */
+	public static final String DUPLICATE_NAME = "app.duplicate-name";
+	/** An application without a class diagram, robot or world, or with more than one of them. */
+	public static final String APPLICATION_STRUCTURE = "app.structure";
+}

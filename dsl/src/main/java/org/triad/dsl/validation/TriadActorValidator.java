@@ -1,0 +1,108 @@
+package org.triad.dsl.validation;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.resource.IEObjectDescription;
+import org.eclipse.xtext.resource.IResourceDescriptions;
+import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
+import org.eclipse.xtext.validation.Check;
+import org.eclipse.xtext.validation.CheckType;
+import org.triad.dsl.semantics.Effect;
+import org.triad.dsl.semantics.Postconditions;
+import org.triad.dsl.triad.Action;
+import org.triad.dsl.triad.Actor;
+import org.triad.dsl.triad.NamedElement;
+import org.triad.dsl.typing.TriadType;
+import org.triad.dsl.typing.TriadTypeSystem;
+
+import com.google.inject.Inject;
+
+/** Rules of robot and world actors; codes in {@link ActorIssueCodes}. */
+public class TriadActorValidator extends AbstractTriadActorValidator {
+	@Inject
+	private ResourceDescriptionsProvider indexProvider;
+
+	@Check
+	public void checkUniqueMembers(Actor actor) {
+		Set<String> seen = new HashSet<>();
+		for (NamedElement member : concat(actor)) {
+			if (member.getName() != null && !seen.add(member.getName())) {
+				error("duplicate member '" + member.getName() + "' of actor '" + actor.getName() + "'", member,
+						P.getNamedElement_Name(), ActorIssueCodes.DUPLICATE_MEMBER);
+			}
+		}
+	}
+
+	private static Iterable<NamedElement> concat(Actor actor) {
+		java.util.List<NamedElement> all = new java.util.ArrayList<>(actor.getProperties());
+		all.addAll(actor.getActions());
+		return all;
+	}
+
+	@Check
+	public void checkPrecondition(Action action) {
+		requireCondition(action.getPre(), "precondition of '" + action.getName() + "'", action, P.getAction_Pre());
+	}
+
+	@Check
+	public void checkPostcondition(Action action) {
+		Postconditions.Analysis analysis = Postconditions.analyse(action.getPost());
+		for (Postconditions.Problem problem : analysis.problems()) {
+			EObject at = problem.expression();
+			error(problem.message(), at.eContainer(), at.eContainmentFeature(), indexIn(at),
+					analysisCode(problem), new String[0]);
+		}
+		Map<String, Effect> byTarget = new HashMap<>();
+		for (Effect effect : analysis.effects()) {
+			if (effect.isAssignment()) {
+				TriadType target = TriadTypeSystem.typeOf(effect.call());
+				TriadType value = TriadTypeSystem.typeOf(effect.value());
+				if (!TriadTypeSystem.isAssignable(target, value)) {
+					error("'" + effect.call().getProperty().getName() + "' is " + target.display() + " and cannot be assigned "
+							+ value.display(), effect.value().eContainer(), effect.value().eContainmentFeature(),
+							ActorIssueCodes.EFFECT_VALUE);
+				}
+			}
+			String key = NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(effect.call())).replaceAll("\\s+", "");
+			Effect previous = byTarget.put(key, effect);
+			if (previous != null) {
+				error("the postcondition of '" + action.getName() + "' sets '" + key + "' twice", effect.call().eContainer(),
+						effect.call().eContainmentFeature(), ActorIssueCodes.CONFLICTING_EFFECTS);
+			}
+		}
+	}
+
+	private static int indexIn(EObject e) {
+		Object value = e.eContainer().eGet(e.eContainmentFeature());
+		return value instanceof java.util.List<?> list ? list.indexOf(e) : -1;
+	}
+
+	private static String analysisCode(Postconditions.Problem problem) {
+		return problem.badValue() ? ActorIssueCodes.EFFECT_VALUE : ActorIssueCodes.POST_NOT_EFFECT;
+	}
+
+	@Check(CheckType.NORMAL)
+	public void checkOneActorOfEachKind(Actor actor) {
+		if (actor.eResource() == null) {
+			return;
+		}
+		IResourceDescriptions index = indexProvider.getResourceDescriptions(actor.eResource());
+		for (IEObjectDescription d : index.getExportedObjectsByType(P.getActor())) {
+			if (d.getEObjectURI().equals(EcoreUtil.getURI(actor))) {
+				continue;
+			}
+			EObject other = EcoreUtil.resolve(d.getEObjectOrProxy(), actor.eResource().getResourceSet());
+			if (other instanceof Actor o && o.getKind() == actor.getKind()) {
+				error("an application has one " + actor.getKind().getLiteral() + ", but '" + o.getName() + "' in "
+						+ d.getEObjectURI().lastSegment() + " is one too", actor, P.getNamedElement_Name(), ActorIssueCodes.DUPLICATE_KIND);
+				return;
+			}
+		}
+	}
+}

@@ -1,0 +1,156 @@
+package org.triad.dsl.validation;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.naming.IQualifiedNameProvider;
+import org.eclipse.xtext.naming.QualifiedName;
+import org.eclipse.xtext.resource.IEObjectDescription;
+import org.eclipse.xtext.resource.IResourceDescriptions;
+import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
+import org.eclipse.xtext.validation.Check;
+import org.eclipse.xtext.validation.CheckType;
+import org.triad.dsl.triad.Actor;
+import org.triad.dsl.triad.BinaryExpression;
+import org.triad.dsl.triad.ClassDiagram;
+import org.triad.dsl.triad.Expression;
+import org.triad.dsl.triad.Goal;
+import org.triad.dsl.triad.NamedElement;
+import org.triad.dsl.triad.NotExpression;
+import org.triad.dsl.triad.Parameter;
+import org.triad.dsl.triad.Parameterized;
+import org.triad.dsl.triad.Property;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.Situation;
+import org.triad.dsl.triad.Task;
+import org.triad.dsl.triad.TriadPackage;
+import org.triad.dsl.typing.TriadType;
+import org.triad.dsl.typing.TriadTypeSystem;
+
+import com.google.inject.Inject;
+
+/**
+ * Checks shared by every Triad language: the type rules of expressions, parameters, and names
+ * that must be unique in the whole application. Each language's validator extends this one.
+ */
+public class TriadCommonValidator extends AbstractTriadCommonValidator {
+	protected static final TriadPackage P = TriadPackage.eINSTANCE;
+
+	@Inject
+	private ResourceDescriptionsProvider indexProvider;
+
+	@Inject
+	private IQualifiedNameProvider names;
+
+	@Check
+	public void checkOperands(BinaryExpression e) {
+		TriadType left = TriadTypeSystem.typeOf(e.getLeft());
+		TriadType right = TriadTypeSystem.typeOf(e.getRight());
+		switch (e.getOperator()) {
+			case AND, OR -> {
+				requireBoolean(e.getLeft(), left, e.getOperator().getLiteral(), P.getBinaryExpression_Left(), e);
+				requireBoolean(e.getRight(), right, e.getOperator().getLiteral(), P.getBinaryExpression_Right(), e);
+			}
+			case EQ, NE -> {
+				if (!TriadTypeSystem.isComparable(left, right)) {
+					error("cannot compare " + left.display() + " with " + right.display() + " using '" + e.getOperator().getLiteral() + "'",
+							e, P.getBinaryExpression_Operator(), CommonIssueCodes.INCOMPATIBLE_OPERANDS);
+				}
+			}
+			case LT, LE, GT, GE -> {
+				if (!left.isNumeric() || !right.isNumeric()) {
+					error("'" + e.getOperator().getLiteral() + "' compares numbers, not " + left.display() + " and " + right.display(),
+							e, P.getBinaryExpression_Operator(), CommonIssueCodes.NOT_NUMERIC);
+				}
+			}
+		}
+	}
+
+	private void requireBoolean(Expression operand, TriadType type, String operator, EStructuralFeature feature, EObject owner) {
+		if (!type.isBoolean()) {
+			error("operand of '" + operator + "' must be boolean, but is " + type.display(), owner, feature,
+					CommonIssueCodes.NOT_BOOLEAN_OPERAND);
+		}
+	}
+
+	@Check
+	public void checkNotOperand(NotExpression e) {
+		requireBoolean(e.getOperand(), TriadTypeSystem.typeOf(e.getOperand()), "!", P.getNotExpression_Operand(), e);
+	}
+
+	@Check
+	public void checkCallArguments(PropertyCall call) {
+		Property p = call.getProperty();
+		if (p == null || p.eIsProxy()) {
+			return;
+		}
+		List<Parameter> params = p.getParameters();
+		if (params.size() != call.getArguments().size()) {
+			error("property '" + p.getName() + "' takes " + params.size() + " argument(s), but " + call.getArguments().size()
+					+ " are given", call, P.getPropertyCall_Property(), CommonIssueCodes.ARGUMENT_COUNT);
+			return;
+		}
+		for (int i = 0; i < params.size(); i++) {
+			TriadType expected = TriadTypeSystem.typeOf(params.get(i).getType());
+			TriadType actual = TriadTypeSystem.typeOf(call.getArguments().get(i));
+			if (!TriadTypeSystem.isAssignable(expected, actual)) {
+				error("argument " + (i + 1) + " of '" + p.getName() + "' must be " + expected.display() + ", but is "
+						+ actual.display(), call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.ARGUMENT_TYPE);
+			}
+		}
+	}
+
+	@Check
+	public void checkParameterNames(Parameterized owner) {
+		Set<String> seen = new HashSet<>();
+		for (Parameter p : owner.getParameters()) {
+			if (p.getName() != null && !seen.add(p.getName())) {
+				error("duplicate parameter '" + p.getName() + "' of '" + owner.getName() + "'", p, P.getNamedElement_Name(),
+						CommonIssueCodes.DUPLICATE_PARAMETER);
+			}
+		}
+	}
+
+	/** Reports a condition that is not Boolean. */
+	protected void requireCondition(Expression condition, String what, EObject owner, EStructuralFeature feature) {
+		if (condition != null && !TriadTypeSystem.typeOf(condition).isBoolean()) {
+			error(what + " must be a boolean condition, but is " + TriadTypeSystem.typeOf(condition).display(), owner, feature,
+					CommonIssueCodes.CONDITION_NOT_BOOLEAN);
+		}
+	}
+
+	@Check(CheckType.NORMAL)
+	public void checkApplicationWideName(NamedElement element) {
+		if (!(element instanceof ClassDiagram || element instanceof Actor || element instanceof Goal || element instanceof Task
+				|| element instanceof Situation) || element.getName() == null || element.eResource() == null) {
+			return;
+		}
+		QualifiedName name = names.getFullyQualifiedName(element);
+		if (name == null) {
+			return;
+		}
+		URI self = EcoreUtil.getURI(element);
+		IResourceDescriptions index = indexProvider.getResourceDescriptions(element.eResource());
+		for (IEObjectDescription other : index.getExportedObjects(P.getNamedElement(), name, false)) {
+			if (!other.getEObjectURI().equals(self) && isApplicationLevel(other)) {
+				error("duplicate name '" + element.getName() + "': a " + kind(other) + " in " + other.getEObjectURI().lastSegment()
+						+ " has the same name", element, P.getNamedElement_Name(), CommonIssueCodes.DUPLICATE_NAME);
+				return;
+			}
+		}
+	}
+
+	private static boolean isApplicationLevel(IEObjectDescription d) {
+		return d.getEClass() == P.getClassDiagram() || d.getEClass() == P.getActor() || d.getEClass() == P.getGoal()
+				|| d.getEClass() == P.getTask() || d.getEClass() == P.getSituation();
+	}
+
+	private static String kind(IEObjectDescription d) {
+		return d.getEClass() == P.getClassDiagram() ? "class diagram" : d.getEClass().getName().toLowerCase();
+	}
+}

@@ -1,0 +1,33 @@
+package org.triad.dsl.validation;
+
+import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.validation.Check;
+import org.triad.dsl.triad.Goal;
+import org.triad.dsl.triad.Parameter;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.ValueRef;
+
+/** Rules of goals; codes in {@link GoalIssueCodes} and {@link CommonIssueCodes}. */
+public class TriadGoalValidator extends AbstractTriadGoalValidator {
+
+	@Check
+	public void checkCondition(Goal goal) {
+		requireCondition(goal.getCondition(), "the situation of goal '" + goal.getName() + "'", goal, P.getGoal_Condition());
+		if (goal.getCondition() != null && EcoreUtil2.getAllContentsOfType(goal.getCondition(), PropertyCall.class).isEmpty()
+				&& !(goal.getCondition() instanceof PropertyCall)) {
+			warning("goal '" + goal.getName() + "' refers to no property of an actor, so no action can achieve or change it", goal,
+					P.getNamedElement_Name(), GoalIssueCodes.NO_PROPERTY);
+		}
+	}
+
+	@Check
+	public void checkParametersUsed(Goal goal) {
+		for (Parameter p : goal.getParameters()) {
+			boolean used = EcoreUtil2.getAllContentsOfType(goal, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
+			if (!used) {
+				warning("parameter '" + p.getName() + "' of goal '" + goal.getName() + "' is not used", p, P.getNamedElement_Name(),
+						GoalIssueCodes.UNUSED_PARAMETER);
+			}
+		}
+	}
+}

@@ -1,0 +1,111 @@
+package org.triad.dsl.validation;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.validation.Check;
+import org.triad.dsl.semantics.Postconditions;
+import org.triad.dsl.triad.AttributeAssignment;
+import org.triad.dsl.triad.BinaryExpression;
+import org.triad.dsl.triad.BinaryOperator;
+import org.triad.dsl.triad.Expression;
+import org.triad.dsl.triad.ObjectDeclaration;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.Situation;
+import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.triad.ValueRef;
+import org.triad.dsl.typing.TriadType;
+import org.triad.dsl.typing.TriadTypeSystem;
+
+/** Rules of situations; codes in {@link StateIssueCodes}. */
+public class TriadStateValidator extends AbstractTriadStateValidator {
+
+	@Check
+	public void checkObjects(Situation s) {
+		Set<String> seen = new HashSet<>();
+		for (ObjectDeclaration d : s.getDeclarations()) {
+			for (SituationObject o : d.getObjects()) {
+				if (o.getName() != null && !seen.add(o.getName())) {
+					error("duplicate object '" + o.getName() + "' in state '" + s.getName() + "'", o, P.getNamedElement_Name(),
+							StateIssueCodes.DUPLICATE_OBJECT);
+				}
+			}
+		}
+	}
+
+	@Check
+	public void checkDeclaration(ObjectDeclaration d) {
+		if (d.getType() != null && !d.getType().eIsProxy() && d.getType().isAbstract()) {
+			error("class '" + d.getType().getName() + "' is abstract and has no objects of its own", d, P.getObjectDeclaration_Type(),
+					StateIssueCodes.ABSTRACT_OBJECT);
+		}
+	}
+
+	@Check
+	public void checkAssignments(SituationObject o) {
+		Set<String> seen = new HashSet<>();
+		for (AttributeAssignment a : o.getAssignments()) {
+			if (a.getAttribute() == null || a.getAttribute().eIsProxy()) {
+				continue;
+			}
+			if (!seen.add(a.getAttribute().getName())) {
+				error("attribute '" + a.getAttribute().getName() + "' of '" + o.getName() + "' is given twice", a,
+						P.getAttributeAssignment_Attribute(), StateIssueCodes.DUPLICATE_ATTRIBUTE);
+			}
+			TriadType expected = TriadTypeSystem.typeOf(a.getAttribute().getType());
+			TriadType actual = TriadTypeSystem.typeOf(a.getValue());
+			if (!Postconditions.isValue(a.getValue()) || a.getValue() instanceof ValueRef && !(expected.kind() == TriadType.Kind.CLASS)
+					|| !TriadTypeSystem.isAssignable(expected, actual)) {
+				error("attribute '" + a.getAttribute().getName() + "' takes a " + expected.display() + " literal", a,
+						P.getAttributeAssignment_Value(), StateIssueCodes.ATTRIBUTE_VALUE);
+			}
+		}
+	}
+
+	@Check
+	public void checkFacts(Situation s) {
+		Map<String, String> values = new HashMap<>();
+		for (int i = 0; i < s.getFacts().size(); i++) {
+			Expression fact = s.getFacts().get(i);
+			PropertyCall call;
+			Expression value = null;
+			if (fact instanceof PropertyCall c && TriadTypeSystem.typeOf(c).isBoolean()) {
+				call = c;
+			} else if (fact instanceof BinaryExpression b && b.getOperator() == BinaryOperator.EQ && b.getLeft() instanceof PropertyCall c
+					&& TriadTypeSystem.typeOf(c).kind() != TriadType.Kind.BOOLEAN) {
+				call = c;
+				value = b.getRight();
+			} else {
+				error("a fact is 'Actor.p(objects)' for a boolean property or 'Actor.f(objects) == value' for another property"
+						+ " (closed world: what is not stated does not hold)", s, P.getSituation_Facts(), i, StateIssueCodes.FACT_KIND);
+				continue;
+			}
+			for (Expression arg : call.getArguments()) {
+				if (!Postconditions.isValue(arg)) {
+					error("arguments of a fact are objects of the state or literals", call, P.getPropertyCall_Arguments(),
+							call.getArguments().indexOf(arg), StateIssueCodes.FACT_ARGUMENT);
+				}
+			}
+			if (value != null) {
+				if (!Postconditions.isValue(value)) {
+					error("the value of a fact is an object of the state or a literal", fact, P.getBinaryExpression_Right(),
+							StateIssueCodes.FACT_ARGUMENT);
+					continue;
+				}
+				String key = text(call);
+				String previous = values.put(key, text(value));
+				if (previous != null && !previous.equals(text(value))) {
+					error("'" + key + "' is " + previous + " and " + text(value) + " at once", fact, P.getBinaryExpression_Right(),
+							StateIssueCodes.CONFLICTING_VALUE);
+				}
+			}
+		}
+	}
+
+	private static String text(Expression e) {
+		return NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(e)).replaceAll("\\s+", "");
+	}
+}
