@@ -28,6 +28,10 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 			return error(CommonIssueCodes.UNQUALIFIED_CALL, "property call '" + name
 					+ "' must name its actor here, e.g. 'Robot." + name + "(...)': only actions of an actor may omit it");
 		}
+		if (ref == P.getPropertyCall_Property() && context.getContext() instanceof PropertyCall call && call.getActor() != null
+				&& call.getActor().eIsProxy()) {
+			return null; // the unknown actor is reported; its properties cannot be known
+		}
 		if (ref == P.getPropertyCall_Property()) {
 			String owner = context.getContext() instanceof PropertyCall call && call.getActor() != null && !call.getActor().eIsProxy()
 					? "actor '" + call.getActor().getName() + "'" : "this actor";

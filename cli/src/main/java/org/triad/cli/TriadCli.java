@@ -1,0 +1,44 @@
+package org.triad.cli;
+
+import java.io.PrintWriter;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The {@code triad} command: the entry point of the toolchain for every role. */
+@Command(name = "triad", mixinStandardHelpOptions = true, version = "Triad 0.1.0",
+		description = "Model-driven service robotics: check, generate and run applications modeled by domain, robotics and integration experts.",
+		subcommands = { CheckCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
+public final class TriadCli implements Runnable {
+	@CommandLine.Spec
+	private CommandLine.Model.CommandSpec spec;
+
+	@Override
+	public void run() {
+		spec.commandLine().usage(spec.commandLine().getOut());
+	}
+
+	public static void main(String[] args) {
+		System.exit(execute(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
+	}
+
+	/** Runs the command line and returns its exit code; unexpected failures are printed as one line, never a stack trace. */
+	public static int execute(String[] args, PrintWriter out, PrintWriter err) {
+		CommandLine cl = new CommandLine(new TriadCli());
+		cl.setOut(out);
+		cl.setErr(err);
+		cl.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
+			commandLine.getErr().println("triad: error: " + describe(ex));
+			return 2;
+		});
+		return cl.execute(args);
+	}
+
+	static String describe(Throwable e) {
+		Throwable t = e;
+		while (t.getCause() != null && t.getCause() != t && (t.getMessage() == null || t instanceof RuntimeException && t.getCause() != null)) {
+			t = t.getCause();
+		}
+		return t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
+	}
+}
