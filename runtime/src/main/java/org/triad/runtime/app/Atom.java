@@ -10,7 +10,7 @@ import java.util.stream.Collectors;
  */
 public record Atom(String actor, String property, List<Object> args) {
     public Atom {
-        args = List.copyOf(args);
+        args = args.stream().map(Values::canonical).toList();
     }
 
     public static Atom of(String actor, String property, Object... args) {

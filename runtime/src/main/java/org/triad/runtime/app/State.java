@@ -114,7 +114,7 @@ public final class State {
             if (value == null || Boolean.FALSE.equals(value)) {
                 values.remove(atom);
             } else {
-                values.put(atom, value);
+                values.put(atom, Values.canonical(value));
             }
             return this;
         }

@@ -1,0 +1,94 @@
+package org.triad.runtime.schema;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.triad.runtime.app.Atom;
+import org.triad.runtime.app.EnumValue;
+import org.triad.runtime.app.State;
+import org.triad.runtime.app.Values;
+
+/**
+ * Evaluates model expressions in a state. Names are looked up in the binding first (parameters),
+ * then among the state's objects (situations name objects directly). Closed world: a Boolean
+ * property not stored is false; a non-Boolean property without a value equals nothing.
+ */
+public final class Evaluator {
+	private final AppSchema schema;
+
+	public Evaluator(AppSchema schema) {
+		this.schema = schema;
+	}
+
+	public boolean holds(Expr e, State state, Map<String, Object> binding) {
+		Object v = eval(e, state, binding);
+		if (v instanceof Boolean b) {
+			return b;
+		}
+		throw new ModelEvaluationException("not a condition: " + Exprs.show(e) + " is " + v);
+	}
+
+	public Object eval(Expr e, State state, Map<String, Object> binding) {
+		if (e instanceof Expr.And a) {
+			return holds(a.left(), state, binding) && holds(a.right(), state, binding);
+		}
+		if (e instanceof Expr.Or o) {
+			return holds(o.left(), state, binding) || holds(o.right(), state, binding);
+		}
+		if (e instanceof Expr.Not n) {
+			return !holds(n.operand(), state, binding);
+		}
+		if (e instanceof Expr.Compare c) {
+			return compare(c, state, binding);
+		}
+		if (e instanceof Expr.Call c) {
+			Atom atom = atom(c, state, binding);
+			boolean isBoolean = schema.property(c.actor(), c.property()).map(PropertySchema::isBoolean)
+					.orElseThrow(() -> new ModelEvaluationException("unknown property " + c.actor() + "." + c.property()));
+			return isBoolean ? state.holds(atom) : state.valueOf(atom).orElse(null);
+		}
+		if (e instanceof Expr.Var v) {
+			if (binding.containsKey(v.name())) {
+				return Values.canonical(binding.get(v.name()));
+			}
+			return state.object(v.name()).orElseThrow(() -> new ModelEvaluationException("unbound name '" + v.name() + "'"));
+		}
+		if (e instanceof Expr.Lit l) {
+			return l.value();
+		}
+		Expr.EnumLit l = (Expr.EnumLit) e;
+		return new EnumValue(l.enumeration(), l.literal());
+	}
+
+	/** The atom a call denotes in a state, its arguments evaluated. */
+	public Atom atom(Expr.Call c, State state, Map<String, Object> binding) {
+		List<Object> args = new ArrayList<>(c.args().size());
+		for (Expr a : c.args()) {
+			args.add(eval(a, state, binding));
+		}
+		return new Atom(c.actor(), c.property(), args);
+	}
+
+	private boolean compare(Expr.Compare c, State state, Map<String, Object> binding) {
+		Object l = eval(c.left(), state, binding);
+		Object r = eval(c.right(), state, binding);
+		return switch (c.op()) {
+			case EQ -> Values.same(l, r);
+			case NE -> !Values.same(l, r);
+			default -> {
+				if (!(l instanceof Number a) || !(r instanceof Number b)) {
+					throw new ModelEvaluationException("'" + c.op().symbol + "' needs numbers: " + Exprs.show(c));
+				}
+				double x = a.doubleValue();
+				double y = b.doubleValue();
+				yield switch (c.op()) {
+					case LT -> x < y;
+					case LE -> x <= y;
+					case GT -> x > y;
+					default -> x >= y;
+				};
+			}
+		};
+	}
+}
