@@ -27,7 +27,7 @@ public record PlanResult(long requestId, GoalInstance goal, State from, Planning
     @Override
     public String toString() {
         String what = alreadySatisfied ? "already satisfied"
-                : outcome instanceof PlanningOutcome.Planned p ? p.plan().size() + " actions"
+                : outcome instanceof PlanningOutcome.Planned p ? p.plan().size() + (p.plan().size() == 1 ? " action" : " actions")
                 : "failed: " + ((PlanningOutcome.Failed) outcome).reason();
         return "plan result #" + requestId + " for " + goal.describe() + ": " + what;
     }

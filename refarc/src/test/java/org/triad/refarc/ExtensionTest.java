@@ -176,4 +176,45 @@ class ExtensionTest {
                 log.get(1));
         assertEquals("task GoTo(b) completed", log.get(log.size() - 1));
     }
+
+    /** A faulty extension that forwards every plan result twice. */
+    static final class Stutter extends PlanVerifierTOP {
+        @Override
+        protected void onProposed(PlanResult message) {
+            verified.send(message);
+            verified.send(message);
+        }
+    }
+
+    static final class StutteringApp extends ComposedComponent {
+        final InPort<TaskInstance> request = inPort("request", TaskInstance.class);
+        final OutPort<Status> status = outPort("status", Status.class);
+        final OpenRefArc core;
+        final Stutter stutter = subcomponent("stutter", new Stutter());
+
+        StutteringApp(World world) {
+            core = subcomponent("core", new OpenRefArc(world, new ScriptedPlanner(), world));
+            connect(request, core.task);
+            connect(core.status, status);
+            connect(core.proposedPlan, stutter.proposed);
+            connect(stutter.verified, core.plan);
+        }
+    }
+
+    @Test
+    void anUnexpectedReplyIsReportedOnStatusAndDoesNotDerailTheTask() {
+        World world = new World("a");
+        StutteringApp app = new StutteringApp(world);
+        List<String> log = run(app, app.request, app.status, Task.goTo("b"));
+        assertEquals(List.of(
+                "task GoTo(b) started",
+                "plan for IsAt(b): robot.move(a, b)",
+                "action 1/1 robot.move(a, b) started",
+                "component fault in stutteringApp.core.controller at plan handling plan result #1 for IsAt(b): 1 action:"
+                        + " IllegalStateException: unexpected plan result #1 for IsAt(b): 1 action while executing and waiting for request #2",
+                "action robot.move(a, b) succeeded",
+                "goal IsAt(b) satisfied",
+                "task GoTo(b) completed"), log);
+        assertEquals(List.of("robot.move(a, b)"), world.executed());
+    }
 }

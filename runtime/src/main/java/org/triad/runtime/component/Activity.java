@@ -43,7 +43,8 @@ final class Activity<R> {
 
             @Override
             Object message() {
-                return result;
+                // the subject, not the result: it tells whoever receives the fault which request failed
+                return subject;
             }
 
             @Override

@@ -36,7 +36,7 @@ public abstract class AtomicComponent extends Component {
      * Runs {@code work} on a worker and delivers its result to {@code onResult} as a message to this
      * component, handled serially with its other messages. If {@code work} throws, the result handler
      * is not called; a {@link ComponentFault} naming {@code activity NAME} and {@code subject} is
-     * raised instead.
+     * raised instead. A fault of the result handler names the same port and subject.
      *
      * @param name     names the activity in faults
      * @param subject  what the activity works on (e.g. the request), reported as the fault's message

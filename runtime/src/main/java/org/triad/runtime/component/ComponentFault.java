@@ -7,7 +7,7 @@ package org.triad.runtime.component;
  *
  * @param componentPath the path of the faulty component, e.g. {@code refArc.planner}
  * @param port          the in port whose message was being handled, or {@code activity NAME}
- * @param message       the message being handled, or the subject of the activity (may be null)
+ * @param message       the message being handled; for an activity, its subject (may be null)
  * @param cause         what was thrown
  */
 public record ComponentFault(String componentPath, String port, Object message, Throwable cause) {

@@ -2,7 +2,9 @@ package org.triad.runtime.component;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * A component made of subcomponents and connectors. Its in ports forward to subcomponent in ports,
@@ -54,7 +56,11 @@ public abstract class ComposedComponent extends Component {
             throw new IllegalArgumentException("a connector in " + path() + " cannot start at " + from
                     + ": it must start at an out port of a subcomponent or an in port of " + path());
         }
+        Set<Port<?>> seen = new HashSet<>();
         for (Port<?> target : to) {
+            if (!seen.add(target)) {
+                throw new IllegalArgumentException("the connector from " + from.qualifiedName() + " names " + target.qualifiedName() + " twice");
+            }
             boolean toOk = target.owner() == this ? target instanceof OutPort : isSubcomponent(target.owner()) && target instanceof InPort;
             if (!toOk) {
                 throw new IllegalArgumentException("a connector in " + path() + " cannot end at " + target

@@ -53,6 +53,13 @@ class ConnectorTest {
     }
 
     @Test
+    void aConnectorCannotNameATargetTwice() {
+        Box box = new Box();
+        assertThrows(IllegalArgumentException.class, () -> box.link(box.a.out, box.s1.in, box.s1.in));
+        assertTrue(box.s1.in.source().isEmpty(), "a rejected connector leaves nothing behind");
+    }
+
+    @Test
     void typeIncompatibleConnectionFails() {
         Box box = new Box();
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> box.link(box.a.out, box.text.in));

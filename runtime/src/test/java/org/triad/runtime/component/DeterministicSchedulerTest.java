@@ -207,4 +207,45 @@ class DeterministicSchedulerTest {
         assertEquals("bad", f.message());
         assertEquals("cannot do bad", f.cause().getMessage());
     }
+
+    static final class FaultExporter extends ComposedComponent {
+        final InPort<Integer> in = inPort("in", Integer.class);
+        final OutPort<ComponentFault> problems = outPort("problems", ComponentFault.class);
+        final Mapper divider = subcomponent("divider", new Mapper(x -> 1 / x));
+
+        FaultExporter() {
+            connect(in, divider.in);
+            connect(faults, problems);
+        }
+    }
+
+    @Test
+    void aComposedComponentCanExportItsFaultsOnAnOutPort() {
+        FaultExporter e = new FaultExporter();
+        List<ComponentFault> problems = new ArrayList<>();
+        e.problems.observe(problems::add);
+        DeterministicScheduler s = Scheduler.deterministic();
+        s.deploy(e);
+        s.send(e.in, 0);
+        s.runUntilIdle();
+        assertEquals(1, problems.size());
+        assertEquals("faultExporter.divider", problems.get(0).componentPath());
+        assertTrue(s.unhandledFaults().isEmpty());
+    }
+
+    @Test
+    void aFaultOfAnActivityResultHandlerNamesTheActivityAndItsSubject() {
+        WorkerBox box = new WorkerBox();
+        DeterministicScheduler s = Scheduler.deterministic();
+        box.done.observe(r -> {
+            throw new IllegalStateException("display broken");
+        });
+        s.deploy(box);
+        s.send(box.request, "fetch");
+        s.runToCompletion();
+        ComponentFault f = box.collector.faults.get(0);
+        assertEquals("activity work", f.port());
+        assertEquals("fetch", f.message());
+        assertEquals("display broken", f.cause().getMessage());
+    }
 }
