@@ -224,6 +224,18 @@ class RefArcTest {
     }
 
     @Test
+    void aPlannerThatReturnsNothingIsAFaultToo() {
+        ScriptedPlanner planner = new ScriptedPlanner((g, from) -> null);
+        RefArcRun r = run(new World("a"), planner, Task.goTo("b"));
+        assertEquals(List.of(
+                "task GoTo(b) started",
+                "component fault in refArc.planner at activity plan handling plan request #1 for IsAt(b): NullPointerException: the GoalPlanner returned no outcome",
+                "replanning IsAt(b) (1 of 3): planning failed: fault in refArc.planner: NullPointerException: the GoalPlanner returned no outcome"),
+                r.log().subList(0, 3));
+        assertEquals(RefArcRun.Outcome.COMPLETED, r.outcome());
+    }
+
+    @Test
     void aPreconditionCheckThatThrowsFailsThatAction() {
         World world = new World("a").crashCheck(1);
         RefArcRun r = run(world, new ScriptedPlanner(), Task.goTo("b"));

@@ -69,7 +69,9 @@ public abstract class Scheduler implements AutoCloseable {
         if (!from.type().isInstance(message)) {
             throw new IllegalArgumentException(message.getClass().getName() + " message does not fit " + from);
         }
-        from.owner().scheduler();
+        if (from.owner().scheduler() != this) {
+            throw new IllegalStateException(from + " belongs to an architecture deployed on another scheduler");
+        }
         deliver(from, message);
     }
 
