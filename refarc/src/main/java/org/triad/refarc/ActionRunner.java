@@ -1,0 +1,14 @@
+package org.triad.refarc;
+
+import java.util.Optional;
+import org.triad.runtime.app.GroundAction;
+import org.triad.runtime.app.State;
+
+/** The application-specific action back-end: the generated ActionExecutor behaviour calling {@code IRobot}/{@code IWorld}. */
+public interface ActionRunner {
+    /** A description of the precondition part of {@code action} that does not hold in {@code now}, or empty if it holds. */
+    Optional<String> violatedPrecondition(GroundAction action, State now) throws Exception;
+
+    /** Executes {@code action} on the platform; may take seconds. Returns whether it succeeded; throwing counts as failure. */
+    boolean execute(GroundAction action) throws Exception;
+}
