@@ -20,6 +20,8 @@ final class SearchTask {
     final int[][] firstPreOf;
     final int[] noPre;
     final Grounder grounder;
+    private int[][] addOf;
+    private int[][] delOf;
 
     SearchTask(Grounder grounder, List<GroundOp> opList, int numFacts) {
         this.grounder = grounder;
@@ -54,5 +56,51 @@ final class SearchTask {
             if (pre[o].length > 0) firstPreOf[pre[o][0]][fill2[pre[o][0]]++] = o;
         }
         noPre = none.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static int[][] invert(int[][] lists, int numFacts) {
+        int[] count = new int[numFacts];
+        for (int[] l : lists) for (int f : l) count[f]++;
+        int[][] out = new int[numFacts][];
+        for (int f = 0; f < numFacts; f++) out[f] = new int[count[f]];
+        int[] fill = new int[numFacts];
+        for (int o = 0; o < lists.length; o++) for (int f : lists[o]) out[f][fill[f]++] = o;
+        return out;
+    }
+
+    /**
+     * The operators that can matter for the goal (backward relevance): achievers of relevant facts
+     * and deleters of facts that must be false (negative goals and preconditions), closed under
+     * their preconditions. Any plan stays a plan after dropping the other operators, so search and
+     * heuristic only need these.
+     */
+    SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
+        if (addOf == null) {
+            addOf = invert(add, numFacts);
+            delOf = invert(del, numFacts);
+        }
+        boolean[] posRel = new boolean[numFacts];
+        boolean[] negRel = new boolean[numFacts];
+        boolean[] opRel = new boolean[ops.length];
+        int[] stack = new int[2 * numFacts + 2];
+        int sp = 0;
+        for (int g : goalPos) if (!posRel[g]) { posRel[g] = true; stack[sp++] = g; }
+        for (int g : goalNeg) if (!negRel[g]) { negRel[g] = true; stack[sp++] = ~g; }
+        int count = 0;
+        while (sp > 0) {
+            int x = stack[--sp];
+            int[] ops = x >= 0 ? addOf[x] : delOf[~x];
+            for (int o : ops) {
+                if (opRel[o]) continue;
+                opRel[o] = true;
+                count++;
+                for (int p : pre[o]) if (!posRel[p]) { posRel[p] = true; stack[sp++] = p; }
+                for (int p : neg[o]) if (!negRel[p]) { negRel[p] = true; stack[sp++] = ~p; }
+            }
+        }
+        if (count == ops.length) return this;
+        List<GroundOp> kept = new ArrayList<>(count);
+        for (int o = 0; o < ops.length; o++) if (opRel[o]) kept.add(ops[o]);
+        return new SearchTask(grounder, kept, numFacts);
     }
 }
