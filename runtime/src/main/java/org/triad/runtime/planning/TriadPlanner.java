@@ -1,0 +1,128 @@
+package org.triad.runtime.planning;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.triad.runtime.pddl.Domain;
+import org.triad.runtime.pddl.Problem;
+
+/**
+ * Triad's own planning engine. Grounds through {@link GroundedProblemCache} (so successive goals on
+ * the same objects and static facts only pay for search), then:
+ * <ol>
+ * <li>a single open goal: A* with the FF heuristic, bounded in expansions (on graph-like problems
+ *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
+ * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking for the first goal, then the first two, ... each stage
+ *     continuing from the previous stage's end state;</li>
+ * <li>if a bounded stage fails: greedy best-first search with helpful actions (complete, with a
+ *     closed list; exhausting it proves the problem unsolvable);</li>
+ * </ol>
+ * and finally removes redundant actions from the plan.
+ */
+public final class TriadPlanner implements Planner {
+    /** Expansions allowed to one bounded A* stage before falling back. */
+    static final long STAGE_EXPANSIONS = 4000;
+    /**
+     * Heuristic weight in goal-agenda stages: later stages start where the relaxed plan ignores the
+     * way back, so A* (and even weight 5) expands the whole f-plateau around the start; a dominant
+     * weight makes the stage greedy on h with ties broken by g, i.e. breadth-first across plateaus,
+     * which keeps stage plans short.
+     */
+    static final int STAGE_WEIGHT = 1000;
+
+    private final GroundedProblemCache cache;
+
+    public TriadPlanner() {
+        this(new GroundedProblemCache(8));
+    }
+
+    public TriadPlanner(GroundedProblemCache cache) {
+        this.cache = cache;
+    }
+
+    public GroundedProblemCache cache() {
+        return cache;
+    }
+
+    @Override
+    public String name() {
+        return "triad";
+    }
+
+    @Override
+    public PlanResult solve(Domain domain, Problem problem, Duration timeout) {
+        long start = System.nanoTime();
+        long deadline = start + timeout.toNanos();
+        GroundedProblem.Query q;
+        try {
+            q = cache.get(domain, problem).query(problem);
+        } catch (PlanningInputException e) {
+            return PlanResult.error(e.getMessage());
+        }
+        double groundMs = (System.nanoTime() - start) / 1e6;
+        long searchStart = System.nanoTime();
+        if (q.unsolvableReason() != null) {
+            return PlanResult.unsolvable(q.unsolvableReason(), new PlanResult.Stats(groundMs, 0, 0, 0));
+        }
+        SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
+        FfHeuristic h = new FfHeuristic(task);
+        Successors succ = new Successors(task);
+        BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
+        long[] effort = new long[2];
+        int[] plan = null;
+
+        List<Integer> open = new ArrayList<>();
+        for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
+        if (open.size() <= 1) {
+            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EXPANSIONS);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+            }
+        } else {
+            plan = agenda(q, search, open, effort);
+        }
+        if (plan == null && System.nanoTime() < deadline) {
+            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, true, Long.MAX_VALUE);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+            }
+        }
+        if (plan == null) return PlanResult.timeout(stats(groundMs, searchStart, effort));
+        plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        List<GroundAction> steps = new ArrayList<>(plan.length);
+        for (int o : plan) steps.add(task.ops[o].toAction());
+        return PlanResult.solved(new Plan(steps), stats(groundMs, searchStart, effort));
+    }
+
+    /** Goals in order of their relaxed distance from the initial state, achieved cumulatively. */
+    private int[] agenda(GroundedProblem.Query q, BestFirstSearch search, List<Integer> open, long[] effort) {
+        List<Integer> order = new ArrayList<>(open);
+        List<Integer> done = new ArrayList<>();
+        for (int g : q.goalPos()) if (!open.contains(g)) done.add(g);
+        int[] state = q.init();
+        List<Integer> plan = new ArrayList<>();
+        for (int i = 0; i < order.size(); i++) {
+            done.add(order.get(i));
+            boolean last = i == order.size() - 1;
+            int[] goals = Grounder.sortedUnique(done);
+            BestFirstSearch.Result r = search.run(state, goals, last ? q.goalNeg() : new int[0], 1, STAGE_WEIGHT, false, STAGE_EXPANSIONS);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
+            for (int o : r.plan()) plan.add(o);
+            state = r.finalState();
+        }
+        return plan.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static PlanResult.Stats stats(double groundMs, long searchStart, long[] effort) {
+        return new PlanResult.Stats(groundMs, (System.nanoTime() - searchStart) / 1e6, effort[0], effort[1]);
+    }
+}

@@ -1,0 +1,116 @@
+package org.triad.runtime.planning;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+import org.triad.runtime.pddl.Domain;
+import org.triad.runtime.pddl.PddlParser;
+import org.triad.runtime.pddl.Problem;
+
+/**
+ * Benchmark main (not a test): hospital and IPC problems, warm JVM, medians.
+ * Run from the repository root:
+ * {@code mvn -B -q -pl runtime test-compile && java -Xmx256m -cp runtime/target/classes:runtime/target/test-classes org.triad.runtime.planning.PlanningBenchmark ../shared/benchmarks/planning}
+ * Optional second argument: a substring filter on problem paths.
+ */
+public final class PlanningBenchmark {
+    private static final int RUNS = 5;
+    private static final Duration TIMEOUT = Duration.ofSeconds(60);
+
+    public static void main(String[] args) throws Exception {
+        Path root = Path.of(args.length > 0 ? args[0] : "../shared/benchmarks/planning");
+        String filter = args.length > 1 ? args[1] : "";
+        Map<String, Integer> optimal = new HashMap<>();
+        for (String line : Files.readAllLines(root.resolve("hospital/optimal.tsv"))) {
+            String[] c = line.split("\t");
+            if (c[0].equals("N")) continue;
+            optimal.put("p-" + c[0] + "-" + c[5] + ".pddl", Integer.parseInt(c[6]));
+        }
+        List<Path[]> jobs = new ArrayList<>();
+        for (String n : List.of("10", "50", "100", "200", "500", "1000", "2000")) {
+            for (String v : List.of("a", "b", "c")) {
+                jobs.add(new Path[] {root.resolve("hospital/domain.pddl"), root.resolve("hospital/p-" + n + "-" + v + ".pddl")});
+            }
+        }
+        try (Stream<Path> dirs = Files.list(root.resolve("ipc"))) {
+            for (Path dir : dirs.filter(Files::isDirectory).sorted().toList()) {
+                try (Stream<Path> files = Files.list(dir)) {
+                    for (Path p : files.sorted().toList()) {
+                        String f = p.getFileName().toString();
+                        if (f.equals("domain.pddl") || f.endsWith("-domain.pddl")) continue;
+                        Path d = dir.resolve("domain.pddl");
+                        Path own = dir.resolve(f.replace(".pddl", "-domain.pddl"));
+                        if (Files.exists(own)) d = own;
+                        jobs.add(new Path[] {d, p});
+                    }
+                }
+            }
+        }
+        System.out.printf("Java %s, max heap %d MB, %d runs (median), timeout %ds%n", System.getProperty("java.version"),
+                Runtime.getRuntime().maxMemory() >> 20, RUNS, TIMEOUT.toSeconds());
+        System.out.println("| problem | ground ms | search ms | total ms | length | optimal | status | validated | expanded | peak heap MB |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+        for (Path[] job : jobs) {
+            String name = root.relativize(job[1]).toString();
+            if (!name.contains(filter)) continue;
+            Domain domain = PddlParser.parseDomain(job[0]);
+            Problem problem = PddlParser.parseProblem(job[1]);
+            System.gc();
+            for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) pool.resetPeakUsage();
+            double[] ground = new double[RUNS];
+            double[] search = new double[RUNS];
+            PlanResult last = null;
+            int runs = 0;
+            for (int i = 0; i < RUNS + 1; i++) {
+                // fresh planner: grounding is measured each time; then the same query on the warm cache
+                TriadPlanner planner = new TriadPlanner();
+                long t0 = System.nanoTime();
+                PlanResult first = planner.solve(domain, problem, TIMEOUT);
+                double total = (System.nanoTime() - t0) / 1e6;
+                last = first;
+                if (first.status() != PlanResult.Status.SOLVED || total > 10_000) {
+                    ground[0] = first.stats().groundMillis();
+                    search[0] = first.stats().searchMillis();
+                    runs = 1;
+                    break;
+                }
+                if (i == 0) continue; // warm-up
+                PlanResult again = planner.solve(domain, problem, TIMEOUT);
+                ground[runs] = first.stats().groundMillis();
+                search[runs] = again.stats().searchMillis();
+                runs++;
+            }
+            long peak = 0;
+            for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+                if (pool.getType() == MemoryType.HEAP) peak += pool.getPeakUsage().getUsed();
+            }
+            String validated = "-";
+            String length = "-";
+            if (last.isSolved()) {
+                validated = PlanValidator.validate(domain, problem, last.plan()).valid() ? "yes" : "NO";
+                length = Integer.toString(last.plan().length());
+            }
+            Integer opt = optimal.get(job[1].getFileName().toString());
+            double g = median(ground, runs);
+            double s = median(search, runs);
+            System.out.printf("| %s | %.1f | %.1f | %.1f | %s | %s | %s | %s | %d | %d |%n", name, g, s, g + s, length,
+                    opt == null || !name.startsWith("hospital") ? "-" : opt.toString(), last.status(), validated,
+                    last.stats().expanded(), peak >> 20);
+        }
+    }
+
+    private static double median(double[] xs, int n) {
+        double[] c = Arrays.copyOf(xs, n);
+        Arrays.sort(c);
+        return n % 2 == 1 ? c[n / 2] : (c[n / 2 - 1] + c[n / 2]) / 2;
+    }
+}
