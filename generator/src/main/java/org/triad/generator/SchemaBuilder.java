@@ -16,6 +16,8 @@ import org.triad.dsl.triad.EnumLiteralRef;
 import org.triad.dsl.triad.Enumeration;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.Goal;
+import org.triad.dsl.triad.GoalReference;
+import org.triad.dsl.triad.Task;
 import org.triad.dsl.triad.IntLiteral;
 import org.triad.dsl.triad.NotExpression;
 import org.triad.dsl.triad.Parameter;
@@ -32,6 +34,7 @@ import org.triad.runtime.schema.Expr;
 import org.triad.runtime.schema.GoalSchema;
 import org.triad.runtime.schema.Param;
 import org.triad.runtime.schema.PropertySchema;
+import org.triad.runtime.schema.TaskSchema;
 import org.triad.runtime.schema.TypeSchema;
 
 /**
@@ -72,6 +75,13 @@ public final class SchemaBuilder {
 		}
 		for (Goal g : app.getGoals()) {
 			b.goal(new GoalSchema(g.getName(), params(g.getParameters()), g.getCondition() == null ? Expr.TRUE : expr(g.getCondition())));
+		}
+		for (Task t : app.getTasks()) {
+			List<TaskSchema.Step> steps = new ArrayList<>();
+			for (GoalReference ref : t.getSteps()) {
+				steps.add(new TaskSchema.Step(ref.getGoal().getName(), ref.getArguments().stream().map(SchemaBuilder::expr).toList()));
+			}
+			b.task(new TaskSchema(t.getName(), params(t.getParameters()), steps));
 		}
 		return b.build();
 	}

@@ -20,6 +20,7 @@ public final class AppSchema {
 	private final Map<String, PropertySchema> properties;
 	private final Map<String, ActionSchema> actions;
 	private final Map<String, GoalSchema> goals;
+	private final Map<String, TaskSchema> tasks;
 
 	private AppSchema(Builder b) {
 		this.name = b.name;
@@ -29,6 +30,7 @@ public final class AppSchema {
 		this.properties = Collections.unmodifiableMap(new LinkedHashMap<>(b.properties));
 		this.actions = Collections.unmodifiableMap(new LinkedHashMap<>(b.actions));
 		this.goals = Collections.unmodifiableMap(new LinkedHashMap<>(b.goals));
+		this.tasks = Collections.unmodifiableMap(new LinkedHashMap<>(b.tasks));
 	}
 
 	public static Builder builder(String name, String robot, String world) {
@@ -61,6 +63,14 @@ public final class AppSchema {
 
 	public Map<String, GoalSchema> goals() {
 		return goals;
+	}
+
+	public Map<String, TaskSchema> tasks() {
+		return tasks;
+	}
+
+	public Optional<TaskSchema> task(String task) {
+		return Optional.ofNullable(tasks.get(task));
 	}
 
 	public Optional<PropertySchema> property(String actor, String property) {
@@ -109,6 +119,7 @@ public final class AppSchema {
 		private final Map<String, PropertySchema> properties = new LinkedHashMap<>();
 		private final Map<String, ActionSchema> actions = new LinkedHashMap<>();
 		private final Map<String, GoalSchema> goals = new LinkedHashMap<>();
+		private final Map<String, TaskSchema> tasks = new LinkedHashMap<>();
 
 		private Builder(String name, String robot, String world) {
 			this.name = name;
@@ -133,6 +144,11 @@ public final class AppSchema {
 
 		public Builder goal(GoalSchema g) {
 			goals.put(g.name(), g);
+			return this;
+		}
+
+		public Builder task(TaskSchema t) {
+			tasks.put(t.name(), t);
 			return this;
 		}
 

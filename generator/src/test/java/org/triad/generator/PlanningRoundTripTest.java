@@ -1,0 +1,77 @@
+package org.triad.generator;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.LoadedApplication;
+import org.triad.dsl.triad.Situation;
+import org.triad.runtime.app.Atom;
+import org.triad.runtime.app.State;
+import org.triad.runtime.pddl.PddlParser;
+import org.triad.runtime.schema.AppSchema;
+import org.triad.runtime.schema.ModelGoal;
+import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.PlanChecker;
+
+/**
+ * The example applications' goals, planned from their situations through the PDDL translation
+ * and the engine, give plans the model-level plan checker accepts.
+ */
+class PlanningRoundTripTest {
+	private static AppSchema hospital;
+	private static State morning;
+
+	@BeforeAll
+	static void load() {
+		LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
+		assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
+		hospital = SchemaBuilder.build(app.application());
+		Situation s = app.application().getSituations().stream().filter(x -> x.getName().equals("Morning")).findFirst().orElseThrow();
+		morning = SituationReader.read(s, hospital);
+	}
+
+	@ParameterizedTest
+	@CsvSource({ "IsAt,ward3,,3", "Holds,gauze,,4", "Delivered,gauze,ward1,9", "PersonAt,alice,xray,4", "FollowedTo,alice,ward2,5",
+			"PersonAt,bob,lobby,8" })
+	void hospitalGoalIsPlannedOptimallyAndChecked(String goal, String a, String b, int expectedLength) {
+		List<Object> args = new ArrayList<>();
+		args.add(morning.object(a).orElseThrow());
+		if (b != null) {
+			args.add(morning.object(b).orElseThrow());
+		}
+		ModelPlanner.Outcome outcome = new ModelPlanner(hospital).plan(goal, args, morning);
+		assertNull(outcome.failure());
+		PlanChecker.Verdict verdict = new PlanChecker(hospital).check(morning, outcome.plan(), new ModelGoal(hospital, goal, args));
+		assertTrue(verdict.valid(), verdict.reason() + " in " + outcome.plan());
+		assertEquals(expectedLength, outcome.plan().size(), outcome.plan().toString());
+	}
+
+	@Test
+	void unreachableGoalYieldsNoPlanNotAnException() {
+		State isolated = morning.toBuilder().retract(Atom.of("Building", "adj", morning.object("lobby").get(), morning.object("c4").get()))
+				.retract(Atom.of("Building", "adj", morning.object("c4").get(), morning.object("lobby").get())).build();
+		ModelPlanner.Outcome outcome = new ModelPlanner(hospital).plan("IsAt", List.of(morning.object("ward3").get()), isolated);
+		assertFalse(outcome.planned());
+		assertTrue(outcome.failure().startsWith("no plan"), outcome.failure());
+	}
+
+	@Test
+	void translatedHospitalPddlParses() {
+		var task = new ModelPlanner(hospital).translator().translate(morning, hospital.goal("Delivered").orElseThrow(),
+				new ModelGoal(hospital, "Delivered", List.of(morning.object("gauze").get(), morning.object("ward1").get())).binding());
+		var domain = PddlParser.parseDomain(task.domain(), "domain.pddl");
+		PddlParser.parseProblem(task.problem(), "problem.pddl");
+		assertEquals(6, domain.actions().size(), task.domain());
+	}
+}
