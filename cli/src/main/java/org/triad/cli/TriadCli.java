@@ -8,7 +8,8 @@ import picocli.CommandLine.Command;
 /** The {@code triad} command: the entry point of the toolchain for every role. */
 @Command(name = "triad", mixinStandardHelpOptions = true, version = "Triad 0.1.0",
 		description = "Model-driven service robotics: check, generate and run applications modeled by domain, robotics and integration experts.",
-		subcommands = { CheckCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
+		subcommands = { CheckCommand.class, RunCommand.class, PddlCommand.class, SolveCommand.class, LspCommand.class,
+				CommandLine.HelpCommand.class })
 public final class TriadCli implements Runnable {
 	@CommandLine.Spec
 	private CommandLine.Model.CommandSpec spec;
@@ -28,7 +29,7 @@ public final class TriadCli implements Runnable {
 		cl.setOut(out);
 		cl.setErr(err);
 		cl.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
-			commandLine.getErr().println("triad: error: " + describe(ex));
+			commandLine.getErr().println("triad " + commandLine.getCommandName() + ": " + describe(ex));
 			return 2;
 		});
 		return cl.execute(args);

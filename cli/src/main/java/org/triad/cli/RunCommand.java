@@ -1,0 +1,71 @@
+package org.triad.cli;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+import org.triad.refarc.RefArcRun;
+import org.triad.refarc.RefArcRunner;
+import org.triad.refarc.Status;
+import org.triad.refarc.model.DryRunWorld;
+import org.triad.refarc.model.SchemaGoalPlanner;
+import org.triad.runtime.app.State;
+import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.ModelTask;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code triad run DIR --state S.state --task "Fetch(gauze, storage, ward3)"}: a dry run through RefArc. */
+@Command(name = "run", mixinStandardHelpOptions = true,
+		description = { "Execute a task through the reference architecture RefArc against a situation, with a robot and a world",
+				"whose actions do exactly what their postconditions say. Prints the Status stream.",
+				"Exit code: 0 when the task completed, 1 when it was aborted, 2 for bad input." })
+public final class RunCommand implements Callable<Integer> {
+	@Parameters(index = "0", paramLabel = "DIR", description = "the application's folder")
+	private Path dir;
+
+	@Option(names = "--state", required = true, paramLabel = "S.state|NAME", description = "a .state file of the application, or a situation's name")
+	private String state;
+
+	@Option(names = "--situation", paramLabel = "NAME", description = "which situation of the .state file (default: its first)")
+	private String situation;
+
+	@Option(names = "--task", required = true, paramLabel = "TASK(args)", description = "the task, e.g. \"Fetch(gauze, storage, ward3)\"")
+	private String task;
+
+	@Option(names = "--fail", paramLabel = "ACTION[@N]", description = "make the N-th call (default: first) of ACTION fail; repeatable")
+	private List<String> failures = List.of();
+
+	@CommandLine.Spec
+	private CommandLine.Model.CommandSpec spec;
+
+	@Override
+	public Integer call() {
+		ModelSession session = ModelSession.open(dir);
+		State s = session.situation(state, situation);
+		ModelSession.Call call = ModelSession.parseCall(task, s);
+		ModelTask instance = new ModelTask(session.schema, call.name(), call.args());
+		DryRunWorld world = new DryRunWorld(session.schema, s);
+		for (String f : failures) {
+			String[] parts = f.split("@", 2);
+			int nth;
+			try {
+				nth = parts.length == 2 ? Integer.parseInt(parts[1]) : 1;
+			} catch (NumberFormatException e) {
+				throw new ModelSession.UserError("--fail takes ACTION or ACTION@N with N a number, not '" + f + "'");
+			}
+			if (session.schema.actions().stream().noneMatch(a -> a.name().equals(parts[0]))) {
+				throw new ModelSession.UserError("--fail: the application has no action '" + parts[0] + "'");
+			}
+			world.failOnCall(parts[0], nth);
+		}
+		RefArcRun run = new RefArcRunner(world, new SchemaGoalPlanner(new ModelPlanner(session.schema)), world).run(instance);
+		for (Status status : run.statuses()) {
+			spec.commandLine().getOut().println(status);
+		}
+		return run.outcome() == RefArcRun.Outcome.COMPLETED ? 0 : 1;
+	}
+}
