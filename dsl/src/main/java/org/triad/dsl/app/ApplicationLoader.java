@@ -142,6 +142,7 @@ public final class ApplicationLoader {
 		}
 		if (!diagrams.isEmpty()) {
 			app.setDomain(diagrams.get(0));
+			app.setName(diagrams.get(0).getName());
 		}
 		if (!robots.isEmpty()) {
 			app.setRobot(robots.get(0));
