@@ -1,0 +1,59 @@
+package org.triad.generator;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+
+import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.LoadedApplication;
+import org.triad.runtime.app.State;
+import org.triad.runtime.schema.AppSchema;
+import org.triad.runtime.schema.ModelPlanner;
+
+/**
+ * Benchmark (not a test): how long the Planner component needs per hospital goal, from the current
+ * state to a plan of the application's actions (PDDL translation, parsing, grounding, search), warm,
+ * median of 200 runs. Run from the repository root:
+ * {@code mvn -q -pl generator -am test-compile -Dexec.skip=true && mvn -q -pl generator exec:java -Dexec.skip=false -Dexec.classpathScope=test -Dexec.mainClass=org.triad.generator.HospitalPlanningBenchmark}
+ */
+public final class HospitalPlanningBenchmark {
+	private HospitalPlanningBenchmark() {
+	}
+
+	public static void main(String[] args) {
+		Path models = Path.of(args.length > 0 ? args[0] : "models/hospital/src/main/models");
+		LoadedApplication app = ApplicationLoader.load(models);
+		if (app.hasErrors()) {
+			throw new IllegalStateException("hospital models have errors: " + app.diagnostics());
+		}
+		AppSchema schema = SchemaBuilder.build(app.application());
+		State morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning"))
+				.findFirst().orElseThrow(), schema);
+		String[][] goals = { { "IsAt", "ward3" }, { "Holds", "gauze" }, { "Delivered", "gauze", "ward1" }, { "PersonAt", "alice", "xray" },
+				{ "FollowedTo", "alice", "ward2" } };
+		ModelPlanner planner = new ModelPlanner(schema);
+		System.out.println("| goal | plan length | median ms | p90 ms |");
+		System.out.println("|---|---|---|---|");
+		for (String[] g : goals) {
+			List<Object> goalArgs = new ArrayList<>();
+			for (int i = 1; i < g.length; i++) {
+				goalArgs.add(morning.object(g[i]).orElseThrow());
+			}
+			int length = -1;
+			for (int i = 0; i < 50; i++) {
+				length = planner.plan(g[0], goalArgs, morning).plan().size();
+			}
+			double[] ms = new double[200];
+			for (int i = 0; i < ms.length; i++) {
+				long t0 = System.nanoTime();
+				planner.plan(g[0], goalArgs, morning);
+				ms[i] = (System.nanoTime() - t0) / 1e6;
+			}
+			Arrays.sort(ms);
+			System.out.printf(Locale.ROOT, "| %s(%s) | %d | %.2f | %.2f |%n", g[0], String.join(", ", Arrays.copyOfRange(g, 1, g.length)),
+					length, ms[ms.length / 2], ms[(int) (ms.length * 0.9)]);
+		}
+	}
+}
