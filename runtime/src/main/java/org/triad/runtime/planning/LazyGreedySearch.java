@@ -3,14 +3,15 @@ package org.triad.runtime.planning;
 import java.util.Arrays;
 
 /**
- * Lazy greedy best-first search with preferred operators, as in LAMA's first iteration: a
- * successor is queued under its parent's heuristic value and evaluated only when it is expanded,
- * so each expansion costs one heuristic evaluation. Successors reached by helpful actions also go
- * to a preferred queue, which is favoured (boosted) every time the best heuristic value improves.
- * Complete with a closed list; exhausting the queues proves the task unsolvable.
+ * Lazy greedy best-first search with preferred operators and two heuristics, as in LAMA's first
+ * iteration: a successor is queued under its parent's values and evaluated only when expanded.
+ * Four queues (FF, landmark count, and their preferred-operator versions) are used round-robin,
+ * and the preferred ones are boosted every time either heuristic improves. Complete with a closed
+ * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
  */
 final class LazyGreedySearch {
     private final FfHeuristic heuristic;
+    private final Landmarks landmarks;
     private final Successors successors;
     private final long deadline;
 
@@ -18,8 +19,10 @@ final class LazyGreedySearch {
     private int[] entryOp = new int[1024];
     private int entries;
 
-    LazyGreedySearch(FfHeuristic heuristic, Successors successors, long deadlineNanos) {
+    /** {@code landmarks} may be null: then only the FF queues are used. */
+    LazyGreedySearch(FfHeuristic heuristic, Landmarks landmarks, Successors successors, long deadlineNanos) {
         this.heuristic = heuristic;
+        this.landmarks = landmarks;
         this.successors = successors;
         this.deadline = deadlineNanos;
     }
@@ -36,29 +39,27 @@ final class LazyGreedySearch {
 
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg) {
         StateSpace space = new StateSpace();
-        NodeHeap open = new NodeHeap();
-        NodeHeap pref = new NodeHeap();
+        int nq = landmarks == null ? 2 : 4;
+        NodeHeap[] queues = new NodeHeap[nq];
+        for (int i = 0; i < nq; i++) queues[i] = new NodeHeap();
+        int[] priority = new int[nq];
+        long[][] accepted = landmarks == null ? null : new long[1024][];
         long expanded = 0;
         long evaluated = 0;
-        int bestH = Integer.MAX_VALUE;
-        int boost = 0;
-        boolean turn = false;
-        open.push(0, entry(-1, -1));
-        while (!open.isEmpty() || !pref.isEmpty()) {
+        int bestFf = Integer.MAX_VALUE;
+        int bestLm = Integer.MAX_VALUE;
+        queues[0].push(0, entry(-1, -1));
+        while (true) {
+            int qi = -1;
+            for (int i = 0; i < nq; i++) {
+                if (!queues[i].isEmpty() && (qi < 0 || priority[i] < priority[qi])) qi = i;
+            }
+            if (qi < 0) break;
+            priority[qi]++;
             if ((evaluated & 7) == 0 && System.nanoTime() > deadline) {
                 return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
             }
-            NodeHeap q;
-            if (pref.isEmpty()) {
-                q = open;
-            } else if (open.isEmpty() || boost > 0) {
-                q = pref;
-                if (boost > 0) boost--;
-            } else {
-                q = turn ? pref : open;
-                turn = !turn;
-            }
-            int e = q.pop();
+            int e = queues[qi].pop();
             int parent = entryParent[e];
             int op = entryOp[e];
             int[] state = parent < 0 ? init : successors.apply(space.state(parent), op);
@@ -72,28 +73,40 @@ final class LazyGreedySearch {
                 return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
             }
             expanded++;
-            if (h < bestH) {
-                bestH = h;
-                boost += 1000;
+            boolean progress = false;
+            if (h < bestFf) {
+                bestFf = h;
+                progress = true;
+            }
+            int hl = 0;
+            if (landmarks != null) {
+                if (node >= accepted.length) accepted = Arrays.copyOf(accepted, accepted.length * 2);
+                accepted[node] = landmarks.accept(parent < 0 ? null : accepted[parent], state);
+                hl = landmarks.value(accepted[node], state);
+                if (hl < bestLm) {
+                    bestLm = hl;
+                    progress = true;
+                }
+            }
+            if (progress) {
+                priority[1] -= 1000;
+                if (nq == 4) priority[3] -= 1000;
             }
             int nh = heuristic.helpfulCount();
             int[] helpful = new int[nh];
             for (int i = 0; i < nh; i++) helpful[i] = heuristic.helpful(i);
             Arrays.sort(helpful);
             int n = successors.applicable(state);
-            long key = h;
-            // preferred successors first, so that among equal keys they are expanded first
             for (int i = 0; i < n; i++) {
                 int o = successors.get(i);
-                if (Arrays.binarySearch(helpful, o) >= 0) {
-                    int id = entry(node, o);
-                    pref.push(key, id);
-                    open.push(key, id);
+                int id = entry(node, o);
+                boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
+                queues[0].push(h, id);
+                if (preferred) queues[1].push(h, id);
+                if (nq == 4) {
+                    queues[2].push(hl, id);
+                    if (preferred) queues[3].push(hl, id);
                 }
-            }
-            for (int i = 0; i < n; i++) {
-                int o = successors.get(i);
-                if (Arrays.binarySearch(helpful, o) < 0) open.push(key, entry(node, o));
             }
         }
         return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);

@@ -15,8 +15,9 @@ import org.triad.runtime.pddl.Problem;
  *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
  * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking for the first goal, then the first two, ... each stage
  *     continuing from the previous stage's end state;</li>
- * <li>if a bounded stage fails: lazy greedy best-first search with preferred (helpful) operators
- *     (complete, with a closed list; exhausting it proves the problem unsolvable);</li>
+ * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
+ *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
+ *     exhausting it proves the problem unsolvable);</li>
  * </ol>
  * and finally removes redundant actions from the plan.
  */
@@ -88,7 +89,8 @@ public final class TriadPlanner implements Planner {
             plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
         }
         if (plan == null && System.nanoTime() < deadline) {
-            BestFirstSearch.Result r = new LazyGreedySearch(h, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
+            Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
+            BestFirstSearch.Result r = new LazyGreedySearch(h, lms, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
