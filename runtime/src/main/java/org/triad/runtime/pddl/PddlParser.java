@@ -70,6 +70,7 @@ public final class PddlParser {
         List<PredicateDecl> preds = new ArrayList<>();
         List<PredicateDecl> functions = new ArrayList<>();
         List<Action> actions = new ArrayList<>();
+        List<SExpr> actionExprs = new ArrayList<>();
         for (SExpr sec : items.subList(2, items.size())) {
             String head = sec.head();
             if (head == null) throw err(sec, "expected a domain section such as '(:predicates ...)'");
@@ -87,18 +88,21 @@ public final class PddlParser {
                         // "- number" type annotations are accepted and ignored
                     }
                 }
-                case ":action" -> actions.add(action(sec));
+                case ":action" -> {
+                    actions.add(action(sec));
+                    actionExprs.add(sec);
+                }
                 case ":derived", ":durative-action" -> throw err(sec, head + " is not supported (STRIPS/ADL subset only)");
                 default -> throw err(sec, "unknown domain section '" + head + "'");
             }
         }
         Set<String> seen = new HashSet<>();
-        for (Action a : actions) {
-            if (!seen.add(a.name())) throw err(root, "action '" + a.name() + "' is defined twice");
+        for (int i = 0; i < actions.size(); i++) {
+            if (!seen.add(actions.get(i).name())) throw err(actionExprs.get(i), "action '" + actions.get(i).name() + "' is defined twice");
         }
         Set<String> declared = new HashSet<>();
         preds.forEach(p -> declared.add(p.name()));
-        for (Action a : actions) checkPredicates(a, declared, root);
+        for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
         return new Domain(name, reqs, types, constants, preds, functions, actions);
     }
 

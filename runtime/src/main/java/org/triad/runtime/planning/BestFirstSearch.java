@@ -30,7 +30,7 @@ final class BestFirstSearch {
         return (f << 24) | Math.min(h, (1 << 24) - 1);
     }
 
-    Result run(int[] init, int[] goalPos, int[] goalNeg, int weightG, int weightH, boolean preferred, long expansionLimit) {
+    Result run(int[] init, int[] goalPos, int[] goalNeg, int weightG, int weightH, boolean preferred, long evaluationLimit) {
         StateSpace space = new StateSpace();
         long expanded = 0;
         long evaluated = 1;
@@ -49,10 +49,8 @@ final class BestFirstSearch {
         int boost = 0;
         boolean turn = false;
         while (!open.isEmpty() || !pref.isEmpty()) {
-            if ((expanded & 63) == 0 && System.nanoTime() > deadline) {
-                return new Result(Outcome.TIMEOUT, null, null, expanded, evaluated);
-            }
-            if (expanded >= expansionLimit) return new Result(Outcome.LIMIT, null, null, expanded, evaluated);
+            if (System.nanoTime() > deadline) return new Result(Outcome.TIMEOUT, null, null, expanded, evaluated);
+            if (evaluated >= evaluationLimit) return new Result(Outcome.LIMIT, null, null, expanded, evaluated);
             NodeHeap q;
             if (pref.isEmpty()) {
                 q = open;
@@ -92,6 +90,9 @@ final class BestFirstSearch {
                         open.push(key((long) weightG * cg + (long) weightH * space.h(existing), space.h(existing)), existing);
                     }
                     continue;
+                }
+                if ((evaluated & 15) == 0 && System.nanoTime() > deadline) {
+                    return new Result(Outcome.TIMEOUT, null, null, expanded, evaluated);
                 }
                 int ch = heuristic.evaluate(child, goalPos);
                 evaluated++;

@@ -14,8 +14,14 @@ final class FfHeuristic {
     private final int[] level;
     private final int[] factEpoch;
     private final int[] supporter;
-    private final int[] unsat;
-    private final int[] opEpoch;
+    /** Per operator, interleaved for locality: [2o] = epoch of last touch, [2o+1] = unsatisfied preconditions. */
+    private final int[] opState;
+    /** Compressed rows: operators having fact f as a precondition are preOps[preStart[f] .. preStart[f+1]). */
+    private final int[] preStart;
+    private final int[] preOps;
+    private final int[] preCount;
+    private final int[] addStart;
+    private final int[] addFacts;
     private final int[] opMark;
     private final int[] factMark;
     private final int[] queue;
@@ -31,8 +37,27 @@ final class FfHeuristic {
         level = new int[nf];
         factEpoch = new int[nf];
         supporter = new int[nf];
-        unsat = new int[no];
-        opEpoch = new int[no];
+        opState = new int[2 * no];
+        preStart = new int[nf + 1];
+        int total = 0;
+        for (int f = 0; f < nf; f++) {
+            preStart[f] = total;
+            total += t.preOf[f].length;
+        }
+        preStart[nf] = total;
+        preOps = new int[total];
+        for (int f = 0; f < nf; f++) System.arraycopy(t.preOf[f], 0, preOps, preStart[f], t.preOf[f].length);
+        preCount = new int[no];
+        addStart = new int[no + 1];
+        int adds = 0;
+        for (int o = 0; o < no; o++) {
+            preCount[o] = t.pre[o].length;
+            addStart[o] = adds;
+            adds += t.add[o].length;
+        }
+        addStart[no] = adds;
+        addFacts = new int[adds];
+        for (int o = 0; o < no; o++) System.arraycopy(t.add[o], 0, addFacts, addStart[o], t.add[o].length);
         opMark = new int[no];
         factMark = new int[nf];
         queue = new int[nf];
@@ -81,13 +106,21 @@ final class FfHeuristic {
         while (head < tail && missing > 0) {
             int f = queue[head++];
             int lf = level[f];
-            for (int o : t.preOf[f]) {
-                if (opEpoch[o] != epoch) {
-                    opEpoch[o] = epoch;
-                    unsat[o] = t.pre[o].length;
+            for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
+                int o = preOps[i];
+                int pc = preCount[o];
+                if (pc > 1) {
+                    int s2 = o << 1;
+                    if (opState[s2] != epoch) {
+                        opState[s2] = epoch;
+                        opState[s2 + 1] = pc - 1;
+                        continue;
+                    }
+                    if (--opState[s2 + 1] != 0) continue;
                 }
-                if (--unsat[o] == 0) {
-                    for (int a : t.add[o]) {
+                for (int j = addStart[o], aend = addStart[o + 1]; j < aend; j++) {
+                    int a = addFacts[j];
+                    {
                         if (factEpoch[a] != epoch) {
                             factEpoch[a] = epoch;
                             level[a] = lf + 1;

@@ -15,14 +15,15 @@ import org.triad.runtime.pddl.Problem;
  *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
  * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking for the first goal, then the first two, ... each stage
  *     continuing from the previous stage's end state;</li>
- * <li>if a bounded stage fails: greedy best-first search with helpful actions (complete, with a
- *     closed list; exhausting it proves the problem unsolvable);</li>
+ * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
+ *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
+ *     exhausting it proves the problem unsolvable);</li>
  * </ol>
  * and finally removes redundant actions from the plan.
  */
 public final class TriadPlanner implements Planner {
-    /** Expansions allowed to one bounded A* stage before falling back. */
-    static final long STAGE_EXPANSIONS = 4000;
+    /** Heuristic evaluations allowed to one bounded stage before falling back. */
+    static final long STAGE_EVALUATIONS = 10000;
     /**
      * Heuristic weight in goal-agenda stages: later stages start where the relaxed plan ignores the
      * way back, so A* (and even weight 5) expands the whole f-plateau around the start; a dominant
@@ -75,7 +76,7 @@ public final class TriadPlanner implements Planner {
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
         if (open.size() <= 1) {
-            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EXPANSIONS);
+            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
@@ -83,10 +84,13 @@ public final class TriadPlanner implements Planner {
                 return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
             }
         } else {
-            plan = agenda(q, search, open, effort);
+            // the agenda may use a quarter of the time; the complete search gets the rest
+            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 4;
+            plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
         }
         if (plan == null && System.nanoTime() < deadline) {
-            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, true, Long.MAX_VALUE);
+            Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
+            BestFirstSearch.Result r = new LazyGreedySearch(h, lms, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
@@ -112,7 +116,7 @@ public final class TriadPlanner implements Planner {
             done.add(order.get(i));
             boolean last = i == order.size() - 1;
             int[] goals = Grounder.sortedUnique(done);
-            BestFirstSearch.Result r = search.run(state, goals, last ? q.goalNeg() : new int[0], 1, STAGE_WEIGHT, false, STAGE_EXPANSIONS);
+            BestFirstSearch.Result r = search.run(state, goals, last ? q.goalNeg() : new int[0], 1, STAGE_WEIGHT, false, STAGE_EVALUATIONS);
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;

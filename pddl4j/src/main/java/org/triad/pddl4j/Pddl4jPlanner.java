@@ -1,0 +1,127 @@
+package org.triad.pddl4j;
+
+import fr.uga.pddl4j.encoding.CodedProblem;
+import fr.uga.pddl4j.heuristics.relaxation.Heuristic;
+import fr.uga.pddl4j.parser.ErrorManager;
+import fr.uga.pddl4j.parser.Message;
+import fr.uga.pddl4j.planners.ProblemFactory;
+import fr.uga.pddl4j.planners.statespace.AbstractStateSpacePlanner;
+import fr.uga.pddl4j.planners.statespace.ff.FF;
+import fr.uga.pddl4j.planners.statespace.hsp.HSP;
+import fr.uga.pddl4j.util.BitOp;
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.apache.logging.log4j.Level;
+import org.apache.logging.log4j.core.config.Configurator;
+import org.triad.runtime.pddl.Domain;
+import org.triad.runtime.pddl.PddlWriter;
+import org.triad.runtime.pddl.Problem;
+import org.triad.runtime.planning.GroundAction;
+import org.triad.runtime.planning.Plan;
+import org.triad.runtime.planning.PlanResult;
+import org.triad.runtime.planning.Planner;
+
+/**
+ * PDDL4J 3.8.3 behind Triad's {@link Planner} interface. The AST is printed as PDDL and handed to
+ * PDDL4J's parser; FF (enforced hill-climbing, then greedy search) or HSP searches with the timeout
+ * passed explicitly in milliseconds (the default of 600 is silently read as ms). Calls are
+ * serialised: PDDL4J keeps grounding state in static fields. Its loggers are switched off, since
+ * without its memory-measuring agent every search logs an ERROR.
+ */
+public final class Pddl4jPlanner implements Planner {
+    /** Which PDDL4J search to run. */
+    public enum Search { FF, HSP }
+
+    private static final Object LOCK = new Object();
+
+    static {
+        Configurator.setLevel("fr.uga", Level.OFF);
+    }
+
+    private final Search search;
+
+    /** FF, the default used by {@code solve --planner pddl4j}. */
+    public Pddl4jPlanner() {
+        this(Search.FF);
+    }
+
+    public Pddl4jPlanner(Search search) {
+        this.search = search;
+    }
+
+    @Override
+    public String name() {
+        return "pddl4j";
+    }
+
+    @Override
+    public PlanResult solve(Domain domain, Problem problem, Duration timeout) {
+        Path dir = null;
+        try {
+            dir = Files.createTempDirectory("triad-pddl4j");
+            File d = dir.resolve("domain.pddl").toFile();
+            File p = dir.resolve("problem.pddl").toFile();
+            Files.writeString(d.toPath(), PddlWriter.write(domain));
+            Files.writeString(p.toPath(), PddlWriter.write(problem));
+            synchronized (LOCK) {
+                return solveLocked(d, p, timeout);
+            }
+        } catch (IOException e) {
+            return PlanResult.error("PDDL4J input could not be written: " + e.getMessage());
+        } catch (RuntimeException | StackOverflowError e) {
+            // PDDL4J crashes on some inputs (e.g. exists, when): report, never propagate
+            return PlanResult.error("PDDL4J failed: " + e);
+        } finally {
+            if (dir != null) {
+                dir.resolve("domain.pddl").toFile().delete();
+                dir.resolve("problem.pddl").toFile().delete();
+                dir.toFile().delete();
+            }
+        }
+    }
+
+    private PlanResult solveLocked(File d, File p, Duration timeout) throws IOException {
+        long start = System.nanoTime();
+        ProblemFactory factory = new ProblemFactory();
+        factory.setTraceLevel(0);
+        ErrorManager errors = factory.parse(d, p);
+        List<String> messages = new ArrayList<>();
+        for (Message.Type t : List.of(Message.Type.LEXICAL_ERROR, Message.Type.PARSER_ERROR)) {
+            for (Message m : errors.getMessages(t)) messages.add(m.toString());
+        }
+        if (!messages.isEmpty()) return PlanResult.error("PDDL4J rejects the input: " + String.join("; ", messages));
+        CodedProblem coded = factory.encode();
+        double groundMs = (System.nanoTime() - start) / 1e6;
+        if (!coded.isSolvable()) {
+            return PlanResult.unsolvable("PDDL4J's encoding simplified the goal to false", new PlanResult.Stats(groundMs, 0, 0, 0));
+        }
+        long remainingMs = Math.max(1, timeout.toMillis() - (long) groundMs);
+        int timeoutMs = (int) Math.min(Integer.MAX_VALUE, remainingMs);
+        AbstractStateSpacePlanner planner = search == Search.FF
+                ? new FF(timeoutMs, Heuristic.Type.FAST_FORWARD, 1.0, false, 0)
+                : new HSP(timeoutMs, Heuristic.Type.FAST_FORWARD, 1.0, false, 0);
+        long searchStart = System.nanoTime();
+        fr.uga.pddl4j.util.Plan plan = planner.search(coded);
+        double searchMs = (System.nanoTime() - searchStart) / 1e6;
+        PlanResult.Stats stats = new PlanResult.Stats(groundMs, searchMs, 0, 0);
+        if (plan == null) {
+            // 3.8.3 returns null both when the search space is exhausted and on timeout
+            if (searchMs < 0.9 * timeoutMs) return PlanResult.unsolvable("PDDL4J's search ended without a plan", stats);
+            return PlanResult.timeout(stats);
+        }
+        List<String> constants = coded.getConstants();
+        List<GroundAction> steps = new ArrayList<>();
+        for (BitOp op : plan.actions()) {
+            List<String> args = new ArrayList<>(op.getArity());
+            for (int i = 0; i < op.getArity(); i++) args.add(constants.get(op.getValueOfParameter(i)).toLowerCase(Locale.ROOT));
+            steps.add(new GroundAction(op.getName().toLowerCase(Locale.ROOT), args));
+        }
+        return PlanResult.solved(new Plan(steps), stats);
+    }
+}
