@@ -1,0 +1,57 @@
+package org.triad.tests;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.LoadedApplication;
+import org.triad.generator.SchemaBuilder;
+import org.triad.generator.SituationReader;
+import org.triad.pddl4j.Pddl4jPlanner;
+import org.triad.runtime.app.State;
+import org.triad.runtime.schema.AppSchema;
+import org.triad.runtime.schema.ModelGoal;
+import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.PlanChecker;
+
+/**
+ * The hospital application's PDDL, as the Planner translates it at runtime, is accepted by
+ * PDDL4J 3.8.3 (the planner stays pluggable), and PDDL4J's plans pass the model-level plan checker.
+ */
+class Pddl4jOnHospitalTest {
+	private static AppSchema hospital;
+	private static State morning;
+
+	@BeforeAll
+	static void load() {
+		LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
+		assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
+		hospital = SchemaBuilder.build(app.application());
+		morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning")).findFirst()
+				.orElseThrow(), hospital);
+	}
+
+	@ParameterizedTest
+	@CsvSource({ "IsAt,ward3,", "Holds,gauze,", "Delivered,gauze,ward1", "PersonAt,alice,xray", "FollowedTo,alice,ward2" })
+	void pddl4jParsesPlansAndItsPlansCheck(String goal, String a, String b) {
+		List<Object> args = new ArrayList<>();
+		args.add(morning.object(a).orElseThrow());
+		if (b != null) {
+			args.add(morning.object(b).orElseThrow());
+		}
+		ModelPlanner pddl4j = new ModelPlanner(hospital, new Pddl4jPlanner(), Duration.ofSeconds(30));
+		ModelPlanner.Outcome outcome = pddl4j.plan(goal, args, morning);
+		assertNull(outcome.failure());
+		PlanChecker.Verdict verdict = new PlanChecker(hospital).check(morning, outcome.plan(), new ModelGoal(hospital, goal, args));
+		assertTrue(verdict.valid(), verdict.reason());
+	}
+}
