@@ -1,6 +1,7 @@
 package org.triad.cli;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.Callable;
 
@@ -10,6 +11,8 @@ import org.triad.refarc.Status;
 import org.triad.refarc.model.DryRunWorld;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.State;
+import org.triad.runtime.planning.Planner;
+import org.triad.runtime.planning.Planners;
 import org.triad.runtime.schema.ModelPlanner;
 import org.triad.runtime.schema.ModelTask;
 
@@ -39,6 +42,14 @@ public final class RunCommand implements Callable<Integer> {
 	@Option(names = "--fail", paramLabel = "ACTION[@N]", description = "make the N-th call (default: first) of ACTION fail; repeatable")
 	private List<String> failures = List.of();
 
+	@Option(names = "--planner", paramLabel = "triad|pddl4j|COMMAND",
+			description = "the planner: triad (default), pddl4j, or an external planner's command line with {domain} {problem} [{plan}];"
+					+ " default from $TRIAD_PLANNER")
+	private String planner = System.getenv(Planners.ENV);
+
+	@Option(names = "--planning-timeout", paramLabel = "SECONDS", description = "time limit of one planning call (default 30)")
+	private double planningTimeout = 30;
+
 	@CommandLine.Spec
 	private CommandLine.Model.CommandSpec spec;
 
@@ -62,7 +73,14 @@ public final class RunCommand implements Callable<Integer> {
 			}
 			world.failOnCall(parts[0], nth);
 		}
-		RefArcRun run = new RefArcRunner(world, new SchemaGoalPlanner(new ModelPlanner(session.schema)), world).run(instance);
+		Planner engine;
+		try {
+			engine = Planners.byName(planner);
+		} catch (IllegalArgumentException e) {
+			throw new ModelSession.UserError(e.getMessage());
+		}
+		ModelPlanner modelPlanner = new ModelPlanner(session.schema, engine, Duration.ofMillis((long) (planningTimeout * 1000)));
+		RefArcRun run = new RefArcRunner(world, new SchemaGoalPlanner(modelPlanner), world).run(instance);
 		for (Status status : run.statuses()) {
 			spec.commandLine().getOut().println(status);
 		}

@@ -59,6 +59,15 @@ class RunCommandTest {
 	}
 
 	@Test
+	void plannerIsChosenByConfiguration() {
+		Result pddl4j = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "Guide(alice, xray)", "--planner", "pddl4j");
+		assertEquals(0, pddl4j.code(), String.join("\n", pddl4j.lines()) + pddl4j.err());
+		Result unknown = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "Guide(alice, xray)", "--planner", "nope");
+		assertEquals(2, unknown.code());
+		assertTrue(unknown.err().contains("unknown planner 'nope'"), unknown.err());
+	}
+
+	@Test
 	void badInputIsOneLineNotAStackTrace() {
 		Result unknownObject = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "GoTo(kitchen)");
 		assertEquals(2, unknownObject.code());
