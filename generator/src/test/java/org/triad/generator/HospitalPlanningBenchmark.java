@@ -15,8 +15,8 @@ import org.triad.runtime.schema.ModelPlanner;
 /**
  * Benchmark (not a test): how long the Planner component needs per hospital goal, from the current
  * state to a plan of the application's actions (PDDL translation, parsing, grounding, search), warm,
- * median of 200 runs. Run from the repository root:
- * {@code mvn -q -pl generator -am test-compile -Dexec.skip=true && mvn -q -pl generator exec:java -Dexec.skip=false -Dexec.classpathScope=test -Dexec.mainClass=org.triad.generator.HospitalPlanningBenchmark}
+ * median of 200 runs. Run from the repository root (after {@code ./triad --help} has built the tool):
+ * {@code mvn -q -pl generator -am test-compile && java -cp "generator/target/test-classes:generator/target/classes:$(cat cli/target/classpath.txt)" org.triad.generator.HospitalPlanningBenchmark}
  */
 public final class HospitalPlanningBenchmark {
 	private HospitalPlanningBenchmark() {
