@@ -68,10 +68,7 @@ class TaskTemplate {
 
 				@«override»
 				public «list»<«im.ref("org.triad.runtime.app.GoalInstance")»> goals() {
-					return «list».of(
-							«FOR s : t.steps SEPARATOR ','»
-								«goalReference(s, im)»
-							«ENDFOR»);
+					return «list».of(«t.steps.map[goalReference(im)].join(', ')»);
 				}
 
 				@«override»

@@ -31,7 +31,7 @@ public final class TriadJavaGenerator {
 	public record GeneratedFile(String qualifiedName, String content) {
 		public GeneratedFile {
 			// templates indent blank lines too; generated code carries no trailing blanks
-			content = TRAILING_BLANKS.matcher(content).replaceAll("");
+			content = EXTRA_BLANK_LINES.matcher(TRAILING_BLANKS.matcher(content).replaceAll("")).replaceAll("\n\n");
 		}
 
 		/** The file's path relative to a source root. */
@@ -41,6 +41,7 @@ public final class TriadJavaGenerator {
 	}
 
 	private static final Pattern TRAILING_BLANKS = Pattern.compile("[ \t]+$", Pattern.MULTILINE);
+	private static final Pattern EXTRA_BLANK_LINES = Pattern.compile("\n{3,}");
 
 	private TriadJavaGenerator() {
 	}

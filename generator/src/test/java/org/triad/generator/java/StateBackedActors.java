@@ -12,6 +12,7 @@ import java.util.Map;
 
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.DomainObject;
+import org.triad.runtime.app.EnumValue;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
@@ -57,16 +58,22 @@ final class StateBackedActors {
 			String type = ((Class<?>) ((ParameterizedType) m.getGenericReturnType()).getActualTypeArguments()[0]).getSimpleName();
 			return objects.values().stream().filter(o -> o.typeName().equals(type)).toList();
 		}
-		if (schema.action(actor, m.getName()).isPresent()) {
-			executed.add(new GroundAction(actor, m.getName(), args));
+		// a model name that is a Java keyword gets a trailing '_' in Java
+		String name = schema.action(actor, m.getName()).isPresent() || schema.property(actor, m.getName()).isPresent()
+				? m.getName() : m.getName().replaceAll("_$", "");
+		if (schema.action(actor, name).isPresent()) {
+			executed.add(new GroundAction(actor, name, args));
 			return true;
 		}
-		PropertySchema p = schema.property(actor, m.getName()).orElseThrow(() -> new AssertionError("not a property: " + m));
+		PropertySchema p = schema.property(actor, name).orElseThrow(() -> new AssertionError("not a property: " + m));
 		Atom atom = new Atom(actor, p.name(), args);
 		if (p.isBoolean()) {
 			return state.holds(atom);
 		}
 		Object value = state.valueOf(atom).orElse(null);
+		if (value instanceof EnumValue e && m.getReturnType().isEnum()) {
+			return Arrays.stream(m.getReturnType().getEnumConstants()).filter(c -> ((Enum<?>) c).name().equals(e.literal())).findFirst().orElseThrow();
+		}
 		return value instanceof DomainObject o ? objects.get(o.name()) : value;
 	}
 }
