@@ -1,0 +1,259 @@
+package org.triad.generator.java
+
+import java.util.LinkedHashSet
+import java.util.List
+import org.triad.dsl.triad.Action
+import org.triad.dsl.triad.Actor
+import org.triad.dsl.triad.DomainClass
+import org.triad.dsl.triad.Parameter
+import org.triad.dsl.triad.Property
+import org.triad.dsl.typing.TriadType
+import org.triad.dsl.typing.TriadTypeSystem
+
+/**
+ * The generated behaviours of RefArc's application-specific components: the state provider, which
+ * observes the world through {@code IRobot} and {@code IWorld}, and the action executor, which
+ * checks preconditions against the schema and calls the actions' methods.
+ */
+class BehaviourTemplate {
+	val TriadNames names
+
+	new(TriadNames names) {
+		this.names = names
+	}
+
+	// ---- StateProvider -------------------------------------------------------------------------
+
+	def String stateProvider(List<Actor> actors, List<DomainClass> classes) {
+		val im = names.imports(names.basePackage, names.stateProviderClass)
+		val body = stateProviderBody(actors, classes, im)
+		unit(im, body)
+	}
+
+	private def String stateProviderBody(List<Actor> actors, List<DomainClass> classes, Imports im) {
+		val list = im.ref("java.util.List")
+		val domainObject = im.ref("org.triad.runtime.app.DomainObject")
+		val state = im.ref("org.triad.runtime.app.State")
+		val queried = actors.flatMap[properties].filter[enumerable]
+		val candidateTypes = new LinkedHashSet<DomainClass>
+		queried.forEach[parameters.map[TriadTypeSystem.typeOf(type)].filter[kind == TriadType.Kind.CLASS].forEach[candidateTypes.add(domainClass)]]
+		'''
+			/**
+			 * Observes the world: the objects {@code «names.worldInterface»} lists, then every property of the robot and the
+			 * world for every combination of arguments of the right types (Boolean properties that hold as facts, other
+			 * properties with their values). Generated: do not edit.
+			 */
+			public class «names.stateProviderClass» implements «im.ref("org.triad.refarc.StateSource")» {
+				«fields(im)»
+
+				public «names.stateProviderClass»(«im.ref(names.qualifiedRobotInterface)» «names.robotField», «im.ref(names.qualifiedWorldInterface)» «names.worldField») {
+					«fieldAssignments(im)»
+				}
+
+				@«im.ref("java.lang.Override")»
+				public «state» currentState() {
+					«state».Builder builder = «state».builder();
+					«list»<«domainObject»> objects = new «im.ref("java.util.ArrayList")»<>();
+					«FOR c : classes»
+						«objectsQuery(c, im)»
+					«ENDFOR»
+					builder.objects(objects);
+					«FOR c : candidateTypes»
+						«list»<«im.ref(names.qualifiedDomainClass(c))»> «names.candidatesVariable(c)» = ofType(objects, «im.ref(names.qualifiedDomainClass(c))».class);
+					«ENDFOR»
+					«FOR a : actors»
+						«FOR p : a.properties»
+							«propertyQuery(a, p, im)»
+						«ENDFOR»
+					«ENDFOR»
+					return builder.build();
+				}
+
+				private static <T> «list»<T> ofType(«list»<«domainObject»> objects, «im.ref("java.lang.Class")»<T> type) {
+					«list»<T> result = new «im.ref("java.util.ArrayList")»<>();
+					for («domainObject» o : objects) {
+						if (type.isInstance(o)) {
+							result.add(type.cast(o));
+						}
+					}
+					return result;
+				}
+			}
+		'''
+	}
+
+	/** A class of the domain: the objects of it that exist now. */
+	def String objectsQuery(DomainClass c, Imports im) '''
+		objects.addAll(«im.ref("java.util.Objects")».requireNonNull(this.«names.worldField».«names.objectsMethod(c)»(), "«names.worldInterface».«names.objectsMethod(c)»() returned null"));
+	'''
+
+	/** A property: queried for every combination of candidate arguments. */
+	def String propertyQuery(Actor a, Property p, Imports im) {
+		if (!p.enumerable)
+			return '''
+				// «a.name».«p.name» is not observed: its «p.parameters.filter[!enumerable(type)].map[name].join(', ')» cannot be enumerated.
+			'''
+		val call = '''this.«actorField(a)».«names.propertyMethod(p)»(«p.parameters.indexed.map[names.argumentVariable(key)].join(', ')»)'''
+		val atom = '''«im.ref("org.triad.runtime.app.Atom")».of(«JavaLiterals.string(a.name)», «JavaLiterals.string(p.name)»«FOR i : 0 ..< p.parameters.size», «names.argumentVariable(i)»«ENDFOR»)'''
+		val record = if (TriadNames.isBoolean(p.type))
+			'''
+				if («call») {
+					builder.fact(«atom»);
+				}
+			'''
+		else
+			'''
+				builder.value(«atom», «call»);
+			'''
+		loops(p.parameters, 0, record, im)
+	}
+
+	private def String loops(List<Parameter> ps, int i, String inner, Imports im) {
+		if (i == ps.size)
+			return inner
+		val t = TriadTypeSystem.typeOf(ps.get(i).type)
+		val source = switch (t.kind) {
+			case BOOLEAN: '''new boolean[] { false, true }'''
+			case ENUM: '''«im.ref(names.qualifiedDomainClass(t.domainType))».values()'''
+			default: names.candidatesVariable(t.domainClass)
+		}
+		'''
+			for («im.ref(names.javaType(ps.get(i).type))» «names.argumentVariable(i)» : «source») {
+				«loops(ps, i + 1, inner, im)»
+			}
+		'''
+	}
+
+	private def boolean enumerable(Property p) {
+		p.parameters.forall[enumerable(type)]
+	}
+
+	private def boolean enumerable(org.triad.dsl.triad.TypeRef ref) {
+		val k = TriadTypeSystem.typeOf(ref).kind
+		k == TriadType.Kind.BOOLEAN || k == TriadType.Kind.CLASS || k == TriadType.Kind.ENUM
+	}
+
+	// ---- ActionExecutor ------------------------------------------------------------------------
+
+	def String actionExecutor(List<Actor> actors) {
+		val im = names.imports(names.basePackage, names.actionExecutorClass)
+		val body = actionExecutorBody(actors, im)
+		unit(im, body)
+	}
+
+	private def String actionExecutorBody(List<Actor> actors, Imports im) {
+		val string = im.ref("java.lang.String")
+		val object = im.ref("java.lang.Object")
+		val groundAction = im.ref("org.triad.runtime.app.GroundAction")
+		val iae = im.ref("java.lang.IllegalArgumentException")
+		'''
+			/**
+			 * Executes actions: checks a precondition against a state with the application schema, and runs an action by
+			 * calling its method on {@code «names.robotInterface»} or {@code «names.worldInterface»}. Generated: do not edit.
+			 */
+			public class «names.actionExecutorClass» implements «im.ref("org.triad.refarc.ActionRunner")» {
+				«fields(im)»
+				private final «im.ref("org.triad.runtime.schema.Transitions")» transitions = new «im.ref("org.triad.runtime.schema.Transitions")»(«im.ref(names.qualifiedSchemaClass)».«names.schemaField»);
+
+				public «names.actionExecutorClass»(«im.ref(names.qualifiedRobotInterface)» «names.robotField», «im.ref(names.qualifiedWorldInterface)» «names.worldField») {
+					«fieldAssignments(im)»
+				}
+
+				/** The first conjunct of the action's precondition that does not hold in {@code now}. */
+				@«im.ref("java.lang.Override")»
+				public «im.ref("java.util.Optional")»<«string»> violatedPrecondition(«groundAction» action, «im.ref("org.triad.runtime.app.State")» now) {
+					«im.ref("org.triad.runtime.schema.ActionSchema")» schema = this.transitions.schemaOf(action);
+					«im.ref("java.util.Map")»<«string», «object»> binding = this.transitions.binding(schema, action);
+					for («im.ref("org.triad.runtime.schema.Expr")» part : «im.ref("org.triad.runtime.schema.Exprs")».conjuncts(schema.pre())) {
+						if (!this.transitions.evaluator().holds(part, now, binding)) {
+							return «im.ref("java.util.Optional")».of(«im.ref("org.triad.runtime.schema.Exprs")».show(part));
+						}
+					}
+					return «im.ref("java.util.Optional")».empty();
+				}
+
+				@«im.ref("java.lang.Override")»
+				public boolean execute(«groundAction» action) {
+					this.transitions.schemaOf(action);
+					return switch (action.actor() + "." + action.action()) {
+						«FOR a : actors»
+							«FOR act : a.actions»
+								«actionCall(a, act, im)»
+							«ENDFOR»
+						«ENDFOR»
+						default -> throw new «iae»("no method for action " + action);
+					};
+				}
+
+				private static <T> T arg(«groundAction» action, int i, «im.ref("java.lang.Class")»<T> type) {
+					«object» value = action.args().get(i);
+					if (!type.isInstance(value)) {
+						throw new «iae»("argument " + (i + 1) + " of " + action + " is not a " + type.getSimpleName() + ": " + describe(value));
+					}
+					return type.cast(value);
+				}
+
+				private static double doubleArg(«groundAction» action, int i) {
+					return arg(action, i, «im.ref("java.lang.Number")».class).doubleValue();
+				}
+
+				private static <E extends «im.ref("java.lang.Enum")»<E>> E enumArg(«groundAction» action, int i, «im.ref("java.lang.Class")»<E> type, «string» enumeration) {
+					«object» value = action.args().get(i);
+					if (value instanceof «im.ref("org.triad.runtime.app.EnumValue")» e && e.enumeration().equals(enumeration)) {
+						for (E constant : type.getEnumConstants()) {
+							if (constant.name().equals(e.literal())) {
+								return constant;
+							}
+						}
+					}
+					return arg(action, i, type);
+				}
+
+				private static «string» describe(«object» value) {
+					return value == null ? "null" : value + " (" + value.getClass().getName() + ")";
+				}
+			}
+		'''
+	}
+
+	/** An action: dispatched to its method, with the arguments converted to their Java types. */
+	def String actionCall(Actor a, Action act, Imports im) '''
+		case «JavaLiterals.string(a.name + "." + act.name)» -> this.«actorField(a)».«names.actionMethod(act)»(«act.parameters.indexed.map[argument(value, key, im)].join(', ')»);
+	'''
+
+	private def String argument(Parameter p, int i, Imports im) {
+		val t = TriadTypeSystem.typeOf(p.type)
+		switch (t.kind) {
+			case BOOLEAN: '''arg(action, «i», «im.ref("java.lang.Boolean")».class)'''
+			case INT: '''arg(action, «i», «im.ref("java.lang.Integer")».class)'''
+			case DOUBLE: '''doubleArg(action, «i»)'''
+			case STRING: '''arg(action, «i», «im.ref("java.lang.String")».class)'''
+			case ENUM: '''enumArg(action, «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class, «JavaLiterals.string(t.domainType.name)»)'''
+			default: '''arg(action, «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class)'''
+		}
+	}
+
+	// ---- shared --------------------------------------------------------------------------------
+
+	private def String actorField(Actor a) {
+		if (a.kind == org.triad.dsl.triad.ActorKind.ROBOT) names.robotField else names.worldField
+	}
+
+	private def String fields(Imports im) '''
+		private final «im.ref(names.qualifiedRobotInterface)» «names.robotField»;
+		private final «im.ref(names.qualifiedWorldInterface)» «names.worldField»;
+	'''
+
+	private def String fieldAssignments(Imports im) '''
+		this.«names.robotField» = «im.ref("java.util.Objects")».requireNonNull(«names.robotField», "«names.robotField»");
+		this.«names.worldField» = «im.ref("java.util.Objects")».requireNonNull(«names.worldField», "«names.worldField»");
+	'''
+
+	private def String unit(Imports im, String body) '''
+		package «names.basePackage»;
+
+		«im.declarations»
+
+		«body»
+	'''
+}

@@ -1,0 +1,79 @@
+package org.triad.generator.java
+
+import org.triad.dsl.triad.Attribute
+import org.triad.dsl.triad.DomainClass
+import org.triad.dsl.triad.Enumeration
+
+/** The Java class of a domain class, and the Java enum of an enumeration, of the class diagram. */
+class DomainTypeTemplate {
+	val TriadNames names
+
+	new(TriadNames names) {
+		this.names = names
+	}
+
+	def String domainClass(DomainClass c) {
+		val im = names.imports(names.domainPackage, names.domainClass(c))
+		val body = classBody(c, im)
+		'''
+			package «names.domainPackage»;
+
+			«im.declarations»
+
+			«body»
+		'''
+	}
+
+	private def String classBody(DomainClass c, Imports im) {
+		val superClass = if (c.superType === null) im.ref("org.triad.runtime.app.DomainObject") else im.ref(names.qualifiedDomainClass(c.superType))
+		val string = im.ref("java.lang.String")
+		'''
+			/** Class {@code «c.name»} of class diagram {@code «(c.eContainer as org.triad.dsl.triad.ClassDiagram).name»}. Generated: extend, do not edit. */
+			public «IF c.abstract»abstract «ENDIF»class «names.domainClass(c)» extends «superClass» {
+				«FOR a : c.attributes»
+					«attributeField(a, im)»
+				«ENDFOR»
+
+				«IF c.abstract»protected«ELSE»public«ENDIF» «names.domainClass(c)»(«string» «names.objectNameParameter») {
+					super(«names.objectNameParameter»);
+				}
+				«IF !c.abstract»
+
+					@«im.ref("java.lang.Override")»
+					public «string» «names.typeNameMethod»() {
+						return "«c.name»";
+					}
+				«ENDIF»
+				«FOR a : c.attributes»
+
+					«attributeAccessors(a, im)»
+				«ENDFOR»
+			}
+		'''
+	}
+
+	private def String attributeField(Attribute a, Imports im) '''
+		private «im.ref(names.javaType(a.type))» «names.field(a)»;
+	'''
+
+	private def String attributeAccessors(Attribute a, Imports im) '''
+		public «im.ref(names.javaType(a.type))» «names.getter(a)»() {
+			return this.«names.field(a)»;
+		}
+
+		public void «names.setter(a)»(«im.ref(names.javaType(a.type))» value) {
+			this.«names.field(a)» = value;
+		}
+	'''
+
+	def String enumeration(Enumeration e) '''
+		package «names.domainPackage»;
+
+		/** Enumeration {@code «e.name»} of the class diagram. Generated: do not edit. */
+		public enum «names.domainClass(e)» {
+			«FOR l : e.literals SEPARATOR ','»
+				«names.enumConstant(l)»
+			«ENDFOR»
+		}
+	'''
+}

@@ -1,0 +1,55 @@
+package org.triad.generator.java;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.TreeMap;
+
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.generator.GeneratorContext;
+import org.eclipse.xtext.generator.IFileSystemAccess;
+import org.eclipse.xtext.generator.IGenerator2;
+import org.eclipse.xtext.generator.InMemoryFileSystemAccess;
+import org.junit.jupiter.api.Test;
+import org.triad.dsl.app.LoadedApplication;
+import org.triad.dsl.triad.ClassDiagram;
+
+/** The Xtext entry used by the xtext-maven-plugin generates what the Java API generates. */
+class TriadApplicationGeneratorTest {
+	@Test
+	void classDiagramResourceGeneratesTheWholeApplication() {
+		LoadedApplication loaded = TriadJavaGenerator.load(Path.of("../models/hospital/src/main/models"));
+		Resource cd = loaded.application().getDomain().eResource();
+		InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
+		new TriadApplicationGenerator().doGenerate(cd, fsa, new GeneratorContext());
+
+		Map<String, String> expected = new TreeMap<>();
+		for (TriadJavaGenerator.GeneratedFile f : TriadJavaGenerator.files(loaded.application(), "generated.hospital")) {
+			expected.put(IFileSystemAccess.DEFAULT_OUTPUT + f.relativePath().toString().replace('\\', '/'), f.content());
+		}
+		Map<String, String> generated = new TreeMap<>();
+		fsa.getAllFiles().forEach((k, v) -> generated.put(k, v.toString()));
+		assertEquals(expected, generated);
+		assertTrue(generated.containsKey(IFileSystemAccess.DEFAULT_OUTPUT + "generated/hospital/IRobot.java"));
+	}
+
+	@Test
+	void otherModelsGenerateNothingOnTheirOwn() {
+		LoadedApplication loaded = TriadJavaGenerator.load(Path.of("../models/logistics/src/main/models"));
+		InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
+		for (Resource r : loaded.resourceSet().getResources()) {
+			if (!(r.getContents().get(0) instanceof ClassDiagram)) {
+				new TriadApplicationGenerator().doGenerate(r, fsa, new GeneratorContext());
+			}
+		}
+		assertEquals(Map.of(), fsa.getAllFiles());
+	}
+
+	@Test
+	void setupBindsTheGenerator() {
+		IGenerator2 generator = new TriadJavaGeneratorSetup().createInjector().getInstance(IGenerator2.class);
+		assertTrue(generator instanceof TriadApplicationGenerator, generator.getClass().getName());
+	}
+}
