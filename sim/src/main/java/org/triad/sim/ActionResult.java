@@ -17,6 +17,10 @@ public record ActionResult(String action, boolean success, Failure failure, Stri
         return new ActionResult(action, false, failure, message, start, end, pos);
     }
 
+    ActionResult endingAt(double end, Vec2 pos) {
+        return new ActionResult(action, success, failure, message, startTime, end, pos);
+    }
+
     /** Virtual seconds the activity took. */
     public double duration() {
         return endTime - startTime;

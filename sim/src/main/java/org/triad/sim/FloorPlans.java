@@ -9,7 +9,7 @@ public final class FloorPlans {
 
     /**
      * The default plan: {@code corridorWithRooms(List.of("storage", "room1", "room2", "room3"),
-     * List.of("room4", "room5", "room6"), 6, 5, 2.4)}, with items {@code item1..item3} in {@code storage}.
+     * List.of("room4", "room5", "room6"), 6, 5, 2.4)}, with items {@code item1..item3} in {@code storage} within 0.8 m of its centre waypoint.
      * A 24 m x 2.4 m corridor; south rooms storage, room1, room2, room3 (connected to their neighbours by
      * internal doors, so e.g. storage to room2 has a route through the corridor and one through room1);
      * north rooms room4, room5, room6.
@@ -17,7 +17,7 @@ public final class FloorPlans {
     public static FloorPlan corridorWithRooms() {
         FloorPlan.Builder b = builder(List.of("storage", "room1", "room2", "room3"), List.of("room4", "room5", "room6"),
                 6, 5, 2.4);
-        return b.item("item1", 1.0, 1.0).item("item2", 1.0, 4.0).item("item3", 5.0, 1.0).build();
+        return b.item("item1", 2.4, 2.0).item("item2", 3.6, 2.0).item("item3", 3.0, 1.8).build();
     }
 
     /**

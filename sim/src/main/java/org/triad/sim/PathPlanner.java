@@ -84,6 +84,9 @@ final class PathPlanner {
         if (from.distance(p) < 0.05) {
             return true;
         }
+        if (plan.doorsCrossed(from, p) > 1) {
+            return false;
+        }
         Optional<Doorway> door = plan.doorCrossed(from, p);
         if (door.isPresent() && closedDoors.contains(door.get().name())) {
             return false;

@@ -20,7 +20,7 @@ import java.util.TreeSet;
  */
 public final class Robot extends Agent {
     /** Distance, metres, at which the robot perceives the state of a door. */
-    public static final double DOOR_SENSE_RANGE = 2.0;
+    public static final double DOOR_SENSE_RANGE = 3.0;
     private static final double ARRIVAL_TOLERANCE = 0.08;
     private static final double GUIDE_DISTANCE = 1.0;
     private static final double GUIDE_ARRIVAL_RADIUS = 2.0;
@@ -266,7 +266,7 @@ public final class Robot extends Agent {
         } finally {
             activity = null;
         }
-        ActionResult r = a.result;
+        ActionResult r = a.result.endingAt(sim.time(), position());
         sim.record(new TraceEvent(r.endTime(), name, r.action(), r.position(), r.success(),
                 r.success() ? r.message() : r.failure() + ": " + r.message()));
         return r;
