@@ -121,7 +121,7 @@ public final class Person extends Agent {
 
         @Override
         public Vec2 desired() {
-            return follower.desiredVelocity(distance);
+            return follower.desiredVelocity(distance, distance * 0.6);
         }
 
         @Override

@@ -478,7 +478,7 @@ public final class Robot extends Agent {
             } else {
                 farSince = -1;
             }
-            Vec2 desired = follower.desiredVelocity((min + max) / 2);
+            Vec2 desired = follower.desiredVelocity((min + max) / 2, min);
             drive(Steering.avoid(Robot.this, desired, sim.agents(), person).velocity(), dt);
         }
     }
