@@ -16,6 +16,11 @@ public final class EventScript {
         this.time = time;
     }
 
+    /** Continues the script at another virtual time, seconds: {@code sim.at(5).closeDoor("d").at(9).openDoor("d")}. */
+    public EventScript at(double t) {
+        return sim.at(t);
+    }
+
     /** Requests the door to close (it closes once nobody stands in the doorway). */
     public EventScript closeDoor(String door) {
         sim.door(door);
