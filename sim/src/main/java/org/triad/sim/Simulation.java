@@ -514,7 +514,12 @@ public final class Simulation {
             iy[k] = pos == null ? Double.NaN : pos.y();
             k++;
         }
-        trace.add(new TraceFrame(time(), rx, ry, rh, px, py, ix, iy));
+        boolean[] open = new boolean[doors.size()];
+        k = 0;
+        for (Door d : doors.values()) {
+            open[k++] = d.isOpen();
+        }
+        trace.add(new TraceFrame(time(), rx, ry, rh, px, py, ix, iy, open));
     }
 
     @Override
