@@ -11,8 +11,10 @@ import java.util.TreeSet;
  * People route around doors that are currently closed and sidestep others like the robot.
  */
 public final class Person extends Agent {
+    private static final double YIELD_LOOKAHEAD = 2.5;
     private Behaviour behaviour = new Stand();
     private boolean present = true;
+    private boolean yieldsToRobots = true;
 
     Person(Simulation sim, String name, PersonSpec spec) {
         super(sim, name, spec.radius(), spec.maxSpeed(), spec.maxAcceleration());
@@ -36,7 +38,10 @@ public final class Person extends Agent {
         behaviour = new Stand();
     }
 
-    /** Walks forever to random waypoints (from the simulation's seeded generator), pausing 1-4 s at each. */
+    /**
+     * Walks forever to random waypoints (from the simulation's seeded generator, excluding waypoints in
+     * doorways), pausing 1-4 s at each.
+     */
     public void wander() {
         behaviour = new Wander();
     }
@@ -56,6 +61,18 @@ public final class Person extends Agent {
         return sim.plan().roomAt(position());
     }
 
+    /**
+     * Whether the person steps out of the way of a robot coming towards them (default true). People who
+     * block a corridor on purpose do not.
+     */
+    public void setYieldsToRobots(boolean yields) {
+        this.yieldsToRobots = yields;
+    }
+
+    public boolean yieldsToRobots() {
+        return yieldsToRobots;
+    }
+
     void leave() {
         present = false;
     }
@@ -63,8 +80,42 @@ public final class Person extends Agent {
     @Override
     void control(double dt) {
         Vec2 desired = behaviour.desired();
-        Steering.Avoidance a = Steering.avoid(this, desired, sim.agents(), behaviour.ignored());
+        Vec2 escape = yieldsToRobots ? escapeFromRobots() : null;
+        if (escape != null) {
+            drive(escape, dt);
+            return;
+        }
+        // People only steer around robots; among themselves contact physics lets them squeeze past,
+        // which avoids crowd gridlock at popular waypoints.
+        Steering.Avoidance a = Steering.avoid(this, desired, sim.robots(), behaviour.ignored(), true);
         drive(a.velocity(), dt);
+    }
+
+    /** A velocity that leaves the path of an approaching robot, or null if no robot needs the space. */
+    private Vec2 escapeFromRobots() {
+        Vec2 p = position();
+        for (Robot r : sim.robots()) {
+            Vec2 d = r.intendedDirection();
+            if (d.equals(Vec2.ZERO) || r.partner() == this) {
+                continue;
+            }
+            Vec2 rel = p.minus(r.position());
+            double along = rel.dot(d);
+            double lateral = rel.dot(d.perpendicular());
+            if (along < -0.2 || along > YIELD_LOOKAHEAD || Math.abs(lateral) >= r.radius + radius + 0.25) {
+                continue;
+            }
+            Vec2 side = d.perpendicular().times(lateral >= -0.05 ? 1 : -1);
+            double probe = radius + 0.3;
+            if (sim.isFree(p.plus(side.times(probe)), radius)) {
+                return side.times(0.6 * maxSpeed);
+            }
+            if (sim.isFree(p.minus(side.times(probe)), radius) && Math.abs(lateral) < 0.3) {
+                return side.times(-0.6 * maxSpeed);
+            }
+            return d.times(maxSpeed);
+        }
+        return null;
     }
 
     private interface Behaviour {
@@ -141,7 +192,7 @@ public final class Person extends Agent {
                     pauseUntil = sim.time() + 1 + 3 * sim.random().nextDouble();
                 }
                 if (sim.time() >= pauseUntil) {
-                    List<Waypoint> wps = sim.plan().waypoints();
+                    List<Waypoint> wps = sim.wanderTargets();
                     walk = new Walk(wps.get(sim.random().nextInt(wps.size())).name());
                     pauseUntil = -1;
                 } else {

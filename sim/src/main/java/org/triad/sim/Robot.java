@@ -32,6 +32,7 @@ public final class Robot extends Agent {
     private final Set<String> knownClosedDoors = new TreeSet<>();
     private Activity activity;
     private double heading;
+    private Vec2 intendedDirection = Vec2.ZERO;
 
     Robot(Simulation sim, String name, RobotSpec spec) {
         super(sim, name, spec.radius(), spec.maxSpeed(), spec.maxAcceleration());
@@ -288,11 +289,27 @@ public final class Robot extends Agent {
                 }
             }
         }
+        intendedDirection = Vec2.ZERO;
         if (activity != null && activity.result == null) {
             activity.control(dt);
         } else {
             drive(Vec2.ZERO, dt);
         }
+    }
+
+    /** Unit direction the controller wants to go this step (before avoidance), or zero when not moving on. */
+    Vec2 intendedDirection() {
+        return intendedDirection;
+    }
+
+    /** The person being guided or followed, who must not step out of the robot's way. */
+    Agent partner() {
+        return activity == null ? null : activity.partner();
+    }
+
+    private Vec2 avoid(Vec2 desired, Agent partner) {
+        intendedDirection = desired.normalized();
+        return Steering.avoid(this, desired, sim.agents(), partner, false).velocity();
     }
 
     @Override
@@ -326,6 +343,10 @@ public final class Robot extends Agent {
         }
 
         abstract void control(double dt);
+
+        Agent partner() {
+            return null;
+        }
     }
 
     private final class Failed extends Activity {
@@ -360,6 +381,11 @@ public final class Robot extends Agent {
                     + spec.doorWaitSeconds() + 30;
             this.bestRemaining = length;
             this.lastProgress = start;
+        }
+
+        @Override
+        Agent partner() {
+            return guided;
         }
 
         @Override
@@ -422,8 +448,7 @@ public final class Robot extends Agent {
                         sim.peopleNear(p, radius + 1.0)));
                 return;
             }
-            Vec2 desired = follower.desiredVelocity(p, maxSpeed * factor, maxAcceleration);
-            drive(Steering.avoid(Robot.this, desired, sim.agents(), guided).velocity(), dt);
+            drive(avoid(follower.desiredVelocity(p, maxSpeed * factor, maxAcceleration), guided), dt);
         }
 
         /** Creeps towards a closed door, stopping close enough to open it. */
@@ -453,6 +478,11 @@ public final class Robot extends Agent {
         }
 
         @Override
+        Agent partner() {
+            return person;
+        }
+
+        @Override
         void control(double dt) {
             double now = sim.time();
             double d = person.position().distance(position());
@@ -478,8 +508,7 @@ public final class Robot extends Agent {
             } else {
                 farSince = -1;
             }
-            Vec2 desired = follower.desiredVelocity((min + max) / 2, min);
-            drive(Steering.avoid(Robot.this, desired, sim.agents(), person).velocity(), dt);
+            drive(avoid(follower.desiredVelocity((min + max) / 2, min), person), dt);
         }
     }
 

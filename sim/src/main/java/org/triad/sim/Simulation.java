@@ -11,6 +11,7 @@ import java.util.SplittableRandom;
 import java.util.function.BooleanSupplier;
 
 import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.ContinuousDetectionMode;
 import org.dyn4j.world.World;
 
 /**
@@ -37,6 +38,7 @@ public final class Simulation {
     private final PriorityQueue<Scheduled> events = new PriorityQueue<>();
     private final Trace trace = new Trace();
     private List<Agent> agents = List.of();
+    private List<Waypoint> wanderTargets;
     private long steps;
     private long eventSeq;
     private int blockings;
@@ -59,6 +61,9 @@ public final class Simulation {
         world.setGravity(0, 0);
         world.getSettings().setStepFrequency(dt);
         world.getSettings().setAtRestDetectionEnabled(false);
+        // Bodies move at most a few centimetres per step against 10 cm walls: no tunnelling, so the
+        // costly time-of-impact pass is switched off.
+        world.getSettings().setContinuousDetectionMode(ContinuousDetectionMode.NONE);
         for (Wall w : plan.walls()) {
             world.addBody(Bodies.wall(w.a(), w.b(), plan.wallThickness()));
         }
@@ -359,7 +364,8 @@ public final class Simulation {
         List<String> names = new ArrayList<>();
         for (int i = 0; i < count; i++) {
             String name = "blocker" + id + "." + (i + 1);
-            spawnPerson(name, mid.plus(n.times(-minus + spacing * (i + 0.5))), PersonSpec.defaults());
+            spawnPerson(name, mid.plus(n.times(-minus + spacing * (i + 0.5))), PersonSpec.defaults())
+                    .setYieldsToRobots(false);
             names.add(name);
         }
         record(new TraceEvent(time(), "world", "block " + label, mid, true, names.toString()));
@@ -444,6 +450,24 @@ public final class Simulation {
         if (stepping) {
             throw new IllegalStateException("blocking simulation calls are not allowed inside a step (e.g. from events)");
         }
+    }
+
+    /** Waypoints that are not in a doorway, where wandering people may pause. */
+    List<Waypoint> wanderTargets() {
+        if (wanderTargets == null) {
+            List<Waypoint> list = new ArrayList<>();
+            for (Waypoint w : plan.waypoints()) {
+                boolean inDoorway = false;
+                for (Doorway d : plan.doorways()) {
+                    inDoorway |= Segments.pointDistance(w.position(), d.end1(), d.end2()) < 0.5;
+                }
+                if (!inDoorway) {
+                    list.add(w);
+                }
+            }
+            wanderTargets = list.isEmpty() ? plan.waypoints() : List.copyOf(list);
+        }
+        return wanderTargets;
     }
 
     List<Agent> agents() {

@@ -4,7 +4,9 @@ import java.util.List;
 
 /**
  * Local avoidance of moving discs: slow down for anyone in the swept corridor ahead, stop short of
- * them, and sidestep (right-hand side by preference) when there is free floor beside.
+ * them, and sidestep (right-hand side by preference) when there is free floor beside. An agent that
+ * yields (people giving way to robots) backs off when it can neither go on nor sidestep, which breaks
+ * head-on deadlocks in doorways.
  */
 final class Steering {
     private static final double MARGIN = 0.15;
@@ -18,7 +20,7 @@ final class Steering {
     record Avoidance(Vec2 velocity, boolean obstructed) {
     }
 
-    static Avoidance avoid(Agent self, Vec2 desired, List<? extends Agent> others, Agent ignored) {
+    static Avoidance avoid(Agent self, Vec2 desired, List<? extends Agent> others, Agent ignored, boolean yields) {
         double speed = desired.length();
         if (speed < 1e-6) {
             return new Avoidance(desired, false);
@@ -58,12 +60,12 @@ final class Steering {
         }
         Vec2 forward = dir.times(speed * factor);
         Vec2 sideDir = side.normalized();
-        if (sideDir.equals(Vec2.ZERO)) {
-            return new Avoidance(forward, true);
-        }
         double probe = self.radius + 0.25;
-        if (!self.sim.isFree(p.plus(sideDir.times(probe)), self.radius)) {
+        if (!sideDir.equals(Vec2.ZERO) && !self.sim.isFree(p.plus(sideDir.times(probe)), self.radius)) {
             sideDir = ambiguous && self.sim.isFree(p.minus(sideDir.times(probe)), self.radius) ? sideDir.times(-1) : Vec2.ZERO;
+        }
+        if (sideDir.equals(Vec2.ZERO)) {
+            return new Avoidance(yields && factor == 0 ? dir.times(-0.4 * self.maxSpeed) : forward, true);
         }
         return new Avoidance(forward.plus(sideDir.times(0.5 * self.maxSpeed)).clampLength(self.maxSpeed), true);
     }

@@ -23,6 +23,8 @@ import javax.imageio.ImageIO;
  */
 public final class TracePicture {
     private static final int MAX_LEGEND_LINES = 40;
+    /** Minimum picture width in pixels, so legend lines of ~140 characters fit. */
+    static final int MIN_WIDTH = 1000;
 
     private TracePicture() {
     }
@@ -57,7 +59,7 @@ public final class TracePicture {
             }
         }
         int lineHeight = 16;
-        BufferedImage img = new BufferedImage(p.width, p.height + 10 + lineHeight * (events.size() + 1),
+        BufferedImage img = new BufferedImage(Math.max(p.width, MIN_WIDTH), p.height + 10 + lineHeight * (events.size() + 1),
                 BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         p.setup(g, true);
@@ -111,7 +113,7 @@ public final class TracePicture {
             TraceEvent e = events.get(i);
             String line = String.format(Locale.ROOT, "%2d  t=%7.2fs  %-8s %s %s%s", i + 1, e.time(), e.actor(),
                     e.success() ? "ok  " : "FAIL", e.action(), e.success() || e.detail().isEmpty() ? "" : " - " + e.detail());
-            p.text(g, line.length() > 160 ? line.substring(0, 157) + "..." : line, 10, y + lineHeight * (i + 1));
+            p.text(g, line.length() > 140 ? line.substring(0, 137) + "..." : line, 10, y + lineHeight * (i + 1));
         }
         g.dispose();
         return img;

@@ -43,7 +43,7 @@ class PicturesTest {
         BufferedImage img = ImageIO.read(file.toFile());
         assertNotNull(img, "ImageIO can decode the PNG");
         PlanPainter p = new PlanPainter(sim.plan(), 30, 20);
-        assertEquals(p.width, img.getWidth());
+        assertEquals(Math.max(p.width, TracePicture.MIN_WIDTH), img.getWidth());
         int events = sim.trace().events().size();
         assertEquals(p.height + 10 + 16 * (events + 1), img.getHeight(), "map plus one legend line per event");
         assertTrue(events >= 5, "events recorded: " + sim.trace().events());
