@@ -181,6 +181,22 @@ public final class GifReplay {
         gce.setAttribute("transparentColorFlag", "FALSE");
         gce.setAttribute("delayTime", Integer.toString(delayCentiseconds));
         gce.setAttribute("transparentColorIndex", "0");
+        // Without a local table the writer falls back to a generic 256-colour global table, which
+        // maps our indices to the wrong colours.
+        IIOMetadataNode table = child(root, "LocalColorTable");
+        while (table.getFirstChild() != null) {
+            table.removeChild(table.getFirstChild());
+        }
+        table.setAttribute("sizeOfLocalColorTable", Integer.toString(PALETTE.length));
+        table.setAttribute("sortFlag", "FALSE");
+        for (int i = 0; i < PALETTE.length; i++) {
+            IIOMetadataNode entry = new IIOMetadataNode("ColorTableEntry");
+            entry.setAttribute("index", Integer.toString(i));
+            entry.setAttribute("red", Integer.toString(PALETTE[i].getRed()));
+            entry.setAttribute("green", Integer.toString(PALETTE[i].getGreen()));
+            entry.setAttribute("blue", Integer.toString(PALETTE[i].getBlue()));
+            table.appendChild(entry);
+        }
         if (first) {
             IIOMetadataNode apps = child(root, "ApplicationExtensions");
             IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");

@@ -69,6 +69,8 @@ class PicturesTest {
             PlanPainter p = new PlanPainter(sim.plan(), 12, 8);
             assertEquals(p.width, first.getWidth());
             assertEquals(p.height + 16, first.getHeight());
+            int roomPixel = first.getRGB((int) p.px(0.5), (int) p.py(0.5)) & 0xffffff;
+            assertEquals(PlanPainter.ROOM.getRGB() & 0xffffff, roomPixel, "palette colours survive the GIF round trip");
             IIOMetadataNode root = (IIOMetadataNode) reader.getImageMetadata(0).getAsTree("javax_imageio_gif_image_1.0");
             IIOMetadataNode gce = (IIOMetadataNode) root.getElementsByTagName("GraphicControlExtension").item(0);
             assertEquals("4", gce.getAttribute("delayTime"));
