@@ -2,8 +2,11 @@ package org.triad.sim;
 
 import org.dyn4j.dynamics.Body;
 
-/** Common state of robots and people: a dyn4j disc whose velocity a controller sets each step. */
-abstract class Agent {
+/**
+ * Common state of robots and people: a disc (dyn4j body) whose velocity a controller sets each step,
+ * within its speed (m/s) and acceleration (m/s^2) bounds. Only {@link Robot} and {@link Person} extend it.
+ */
+public abstract class Agent {
     final Simulation sim;
     final String name;
     final double radius;
