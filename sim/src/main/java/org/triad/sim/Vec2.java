@@ -41,12 +41,15 @@ public record Vec2(double x, double y) {
         return x * o.y - y * o.x;
     }
 
+    // sqrt rather than Math.hypot: hypot's overflow care is not needed at building scale and it is slow.
     public double length() {
-        return Math.hypot(x, y);
+        return Math.sqrt(x * x + y * y);
     }
 
     public double distance(Vec2 o) {
-        return Math.hypot(x - o.x, y - o.y);
+        double dx = x - o.x;
+        double dy = y - o.y;
+        return Math.sqrt(dx * dx + dy * dy);
     }
 
     /** This vector rotated by +90 degrees (counter-clockwise). */

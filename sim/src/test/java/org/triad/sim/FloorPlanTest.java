@@ -36,6 +36,30 @@ class FloorPlanTest {
     }
 
     @Test
+    void readmeExampleBuildsAndRoutesAroundAClosedDoor() {
+        FloorPlan plan = FloorPlan.builder()
+                .corridor("hall", 0, 5, 24, 7.4)
+                .room("storage", 0, 0, 6, 5).door("storageDoor", "storage", "hall", 3, 5)
+                .room("ward", 6, 0, 12, 5).door("wardDoor", "ward", "hall", 9, 5)
+                .door("storage-ward", "storage", "ward", 6, 2.5)
+                .waypoint("hallWest", 0.6, 6.2).waypoint("hallStorage", 3, 6.2).waypoint("hallWard", 9, 6.2)
+                .roomWaypoints()
+                .doorWaypoints()
+                .lineOfSightEdges(0.4)
+                .item("box", 3, 2)
+                .build();
+        Simulation sim = Simulation.builder(plan).build();
+        Robot robot = sim.addRobot("robot", "storage", RobotSpec.defaults());
+        sim.closeDoor("storage-ward");
+        assertTrue(robot.pick("box").success());
+        ActionResult move = robot.moveTo("ward");
+        assertTrue(move.success() && move.action().contains("hallWard"), "the robot sees the closed door 3 m away"
+                + " and takes the hall: " + move);
+        assertTrue(robot.place("box").success());
+        assertEquals("ward", sim.item("box").room().orElseThrow().name());
+    }
+
+    @Test
     void exampleCorridorPlanIsConnectedAndHasAlternativeRoutes() {
         FloorPlan plan = FloorPlans.corridorWithRooms();
         Set<String> reached = new TreeSet<>();
