@@ -71,6 +71,18 @@ final class PathPlanner {
             }
         }
         if (entry < 0) {
+            // squeezed against a wall or a jamb no waypoint is in clear sight: take the nearest one
+            // that is at least not behind a wall, and let the contact physics slide the disc along
+            for (int i = 0; i < nodes.size(); i++) {
+                Vec2 p = nodes.get(i).position();
+                if (!Double.isInfinite(dist[i]) && from.distance(p) + dist[i] < best
+                        && entryOk(from, p, closedDoors, 0.01)) {
+                    best = from.distance(p) + dist[i];
+                    entry = i;
+                }
+            }
+        }
+        if (entry < 0) {
             return Optional.empty();
         }
         List<String> route = new ArrayList<>();

@@ -297,6 +297,22 @@ public final class Simulation {
         return List.copyOf(items.values());
     }
 
+    /**
+     * Items lying in the room (not carried, not removed), in the order added.
+     *
+     * @throws IllegalArgumentException for an unknown room
+     */
+    public List<Item> itemsIn(String room) {
+        Room r = plan.room(room);
+        List<Item> out = new ArrayList<>();
+        for (Item i : items.values()) {
+            if (!i.isRemoved() && i.holder().isEmpty() && i.room().map(x -> x.equals(r)).orElse(false)) {
+                out.add(i);
+            }
+        }
+        return out;
+    }
+
     public List<Door> doors() {
         return List.copyOf(doors.values());
     }

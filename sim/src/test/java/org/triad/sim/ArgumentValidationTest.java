@@ -47,6 +47,7 @@ class ArgumentValidationTest {
         rejects("overlap a wall", () -> sim.addRobot("r2", new Vec2(6.0, 1.0), RobotSpec.defaults()));
         rejects("overlap 'r'", () -> sim.addRobot("r3", new Vec2(3.2, 2.5), RobotSpec.defaults()));
         rejects("outside every room", () -> sim.addItem("x", new Vec2(-5, -5)));
+        rejects("unknown room 'attic'", () -> sim.itemsIn("attic"));
         rejects("step", () -> Simulation.builder(Scenes.PLAN).stepSeconds(0));
         rejects("duration", () -> sim.runFor(Double.NaN));
         sim.runFor(1);

@@ -15,6 +15,7 @@ class ItemTest {
         Robot robot = sim.addRobot("r", "room1", RobotSpec.defaults());
         Item item = sim.item("item1");
         assertEquals("storage", item.room().orElseThrow().name());
+        assertEquals(List.of("item1", "item2", "item3"), sim.itemsIn("storage").stream().map(Item::name).toList());
 
         ActionResult far = robot.pick("item1");
         assertEquals(Failure.OUT_OF_REACH, far.failure(), far::toString);
@@ -36,6 +37,8 @@ class ItemTest {
         assertTrue(robot.carried().isEmpty());
         assertEquals("room4", item.room().orElseThrow().name());
         assertEquals("room4", item.nearestWaypoint().name());
+        assertEquals(List.of(item), sim.itemsIn("room4"));
+        assertEquals(List.of("item2", "item3"), sim.itemsIn("storage").stream().map(Item::name).toList());
         assertTrue(item.holder().isEmpty());
 
         ActionResult again = robot.pick("item1");
