@@ -14,12 +14,12 @@ import java.util.TreeSet;
  * {@link ActionResult} with the reason. Calls are not re-entrant: do not call them from scripted events.
  * Positions are metres, speeds m/s, durations virtual seconds.
  *
- * <p>The robot remembers doors it has seen closed (within {@value #DOOR_SENSE_RANGE} m) until it sees
+ * <p>The robot remembers doors it has seen closed (in line of sight within {@value #DOOR_SENSE_RANGE} m) until it sees
  * them open again, and plans routes around them; so after a move fails with
  * {@link Failure#DOOR_CLOSED}, moving again to the same waypoint takes another route if the graph has one.
  */
 public final class Robot extends Agent {
-    /** Distance, metres, at which the robot perceives the state of a door. */
+    /** Distance, metres, up to which the robot perceives the state of a door it has in line of sight. */
     public static final double DOOR_SENSE_RANGE = 3.0;
     private static final double ARRIVAL_TOLERANCE = 0.08;
     private static final double GUIDE_DISTANCE = 1.0;
@@ -281,7 +281,7 @@ public final class Robot extends Agent {
     void control(double dt) {
         Vec2 p = position();
         for (Door d : sim.doors()) {
-            if (d.doorway().center().distance(p) <= DOOR_SENSE_RANGE) {
+            if (d.doorway().center().distance(p) <= DOOR_SENSE_RANGE && sim.plan().isClear(p, d.doorway().center(), 0)) {
                 if (d.isOpen()) {
                     knownClosedDoors.remove(d.name());
                 } else {
