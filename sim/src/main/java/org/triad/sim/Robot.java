@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.function.Supplier;
 
 /**
  * A disc-shaped holonomic mobile robot. Its activities are blocking: each call advances virtual time
@@ -426,10 +427,13 @@ public final class Robot extends Agent {
             Door closed = follower.closedDoorAhead(p, DOOR_SENSE_RANGE, sim);
             if (closed != null) {
                 knownClosedDoors.add(closed.name());
-                doorWaitStart = doorWaitStart < 0 ? now : doorWaitStart;
-                if (now - doorWaitStart >= spec.doorWaitSeconds()) {
+                if (doorWaitStart < 0 && velocity().length() < 0.05) {
+                    doorWaitStart = now;
+                }
+                if (doorWaitStart >= 0 && now - doorWaitStart >= spec.doorWaitSeconds()) {
                     fail(Failure.DOOR_CLOSED, String.format(Locale.ROOT,
-                            "door '%s' on the route to '%s' stayed closed for %.1f s", closed.name(), goal,
+                            "door '%s' on the route to '%s' stayed closed for %.1f s while waiting in front of it",
+                            closed.name(), goal,
                             now - doorWaitStart));
                     return;
                 }
@@ -513,16 +517,16 @@ public final class Robot extends Agent {
     }
 
     private final class Handle extends Activity {
-        private final java.util.function.Supplier<Problem> check;
-        private final java.util.function.Supplier<String> effect;
+        private final Supplier<Problem> check;
+        private final Supplier<String> effect;
         private final double end;
 
-        Handle(String action, java.util.function.Supplier<Problem> check, java.util.function.Supplier<String> effect) {
+        Handle(String action, Supplier<Problem> check, Supplier<String> effect) {
             this(action, spec.handlingSeconds(), check, effect);
         }
 
-        Handle(String action, double seconds, java.util.function.Supplier<Problem> check,
-               java.util.function.Supplier<String> effect) {
+        Handle(String action, double seconds, Supplier<Problem> check,
+               Supplier<String> effect) {
             super(action);
             this.check = check;
             this.effect = effect;

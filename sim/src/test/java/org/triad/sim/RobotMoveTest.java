@@ -50,6 +50,11 @@ class RobotMoveTest {
         assertTrue(first.message().contains("room1-room2"), first::toString);
         assertTrue(robot.room().map(Room::name).orElse("").equals("room1"), () -> "stopped in " + robot.room());
         assertEquals(java.util.Set.of("room1-room2"), robot.knownClosedDoors());
+        List<Vec2> waited = sim.trace().robotPath("r");
+        Vec2 end = waited.get(waited.size() - 1);
+        Vec2 fiveSecondsBefore = waited.get(waited.size() - 1 - (int) (5 / sim.stepSeconds()));
+        assertTrue(end.distance(fiveSecondsBefore) < 0.05, "the robot waited 5 s in front of the door");
+        assertTrue(Math.abs(end.x() - 12) < 1.0, () -> "waited close to the door: " + end);
 
         int before = sim.trace().frames().size();
         ActionResult second = robot.moveTo("room2");
