@@ -7,7 +7,6 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.function.Supplier;
 
 /**
  * A disc-shaped holonomic mobile robot. Its activities are blocking: each call advances virtual time
@@ -22,11 +21,11 @@ import java.util.function.Supplier;
 public final class Robot extends Agent {
     /** Distance, metres, up to which the robot perceives the state of a door it has in line of sight. */
     public static final double DOOR_SENSE_RANGE = 3.0;
-    private static final double ARRIVAL_TOLERANCE = 0.08;
-    private static final double GUIDE_DISTANCE = 1.0;
-    private static final double GUIDE_ARRIVAL_RADIUS = 2.0;
-    private static final double GUIDE_WAIT_DISTANCE = 3.0;
-    private static final double LOST_SECONDS = 10;
+    static final double ARRIVAL_TOLERANCE = 0.08;
+    static final double GUIDE_DISTANCE = 1.0;
+    static final double GUIDE_ARRIVAL_RADIUS = 2.0;
+    static final double GUIDE_WAIT_DISTANCE = 3.0;
+    static final double LOST_SECONDS = 10;
 
     private final RobotSpec spec;
     private final List<Item> carried = new ArrayList<>();
@@ -75,6 +74,10 @@ public final class Robot extends Agent {
         return Collections.unmodifiableSet(new TreeSet<>(knownClosedDoors));
     }
 
+    void noteClosedDoor(String door) {
+        knownClosedDoors.add(door);
+    }
+
     /** Forgets seen-closed doors, so the next route may try them again. */
     public void forgetClosedDoors() {
         knownClosedDoors.clear();
@@ -109,7 +112,7 @@ public final class Robot extends Agent {
                         + waypoints.get(i) + "'");
             }
         }
-        return run(new Move("moveAlong" + waypoints, waypoints.get(waypoints.size() - 1), via, null));
+        return run(new MoveActivity(this, "moveAlong" + waypoints, waypoints.get(waypoints.size() - 1), via, null));
     }
 
     /**
@@ -147,7 +150,7 @@ public final class Robot extends Agent {
             throw new IllegalArgumentException("min distance " + minDistance + " m must be < max distance "
                     + maxDistance + " m");
         }
-        return run(new FollowPerson(p, minDistance, maxDistance, timeoutSeconds));
+        return run(new FollowActivity(this, p, minDistance, maxDistance, timeoutSeconds));
     }
 
     /**
@@ -159,18 +162,18 @@ public final class Robot extends Agent {
     public ActionResult pick(String item) {
         Item it = sim.item(item);
         String action = "pick(" + item + ")";
-        return run(new Handle(action, () -> {
+        return run(new HandlingActivity(this, action, () -> {
             if (it.isRemoved() || it.holder().isPresent()) {
-                return new Problem(Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
+                return new HandlingActivity.Problem(Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
                         + (it.isRemoved() ? "gone" : "held by " + it.holder().get().name()));
             }
             double d = it.position().distance(position());
             if (d > spec.reach()) {
-                return new Problem(Failure.OUT_OF_REACH, String.format(Locale.ROOT,
+                return new HandlingActivity.Problem(Failure.OUT_OF_REACH, String.format(Locale.ROOT,
                         "item '%s' is %.2f m away, reach is %.2f m", item, d, spec.reach()));
             }
             if (carried.size() >= spec.capacity()) {
-                return new Problem(Failure.CAPACITY_EXCEEDED, "already carrying " + carried.size() + " item(s)");
+                return new HandlingActivity.Problem(Failure.CAPACITY_EXCEEDED, "already carrying " + carried.size() + " item(s)");
             }
             return null;
         }, () -> {
@@ -187,8 +190,8 @@ public final class Robot extends Agent {
      */
     public ActionResult place(String item) {
         Item it = sim.item(item);
-        return run(new Handle("place(" + item + ")", () -> carried.contains(it) ? null
-                : new Problem(Failure.NOT_CARRYING, "not carrying item '" + item + "'"), () -> {
+        return run(new HandlingActivity(this, "place(" + item + ")", () -> carried.contains(it) ? null
+                : new HandlingActivity.Problem(Failure.NOT_CARRYING, "not carrying item '" + item + "'"), () -> {
                     carried.remove(it);
                     it.placeAt(position());
                     return "placed '" + item + "' in " + it.room().map(Room::name).orElse("no room");
@@ -202,9 +205,9 @@ public final class Robot extends Agent {
      */
     public ActionResult openDoor(String door) {
         Door d = sim.door(door);
-        return run(new Handle("openDoor(" + door + ")", () -> {
+        return run(new HandlingActivity(this, "openDoor(" + door + ")", () -> {
             if (d.isLocked()) {
-                return new Problem(Failure.DOOR_LOCKED, "door '" + door + "' is locked");
+                return new HandlingActivity.Problem(Failure.DOOR_LOCKED, "door '" + door + "' is locked");
             }
             return doorReach(d);
         }, () -> {
@@ -221,7 +224,7 @@ public final class Robot extends Agent {
      */
     public ActionResult closeDoor(String door) {
         Door d = sim.door(door);
-        return run(new Handle("closeDoor(" + door + ")", () -> doorReach(d), () -> {
+        return run(new HandlingActivity(this, "closeDoor(" + door + ")", () -> doorReach(d), () -> {
             d.requestClose();
             return "closing '" + door + "'";
         }));
@@ -234,25 +237,25 @@ public final class Robot extends Agent {
      */
     public ActionResult waitFor(double seconds) {
         Checks.nonNegative("wait (s)", seconds);
-        return run(new Handle("wait", seconds, () -> null, () -> "waited"));
+        return run(new HandlingActivity(this, "wait", seconds, () -> null, () -> "waited"));
     }
 
-    private Problem doorReach(Door d) {
+    private HandlingActivity.Problem doorReach(Door d) {
         double dist = Segments.pointDistance(position(), d.doorway().end1(), d.doorway().end2());
         double reach = spec.reach() + radius;
-        return dist <= reach ? null : new Problem(Failure.OUT_OF_REACH,
+        return dist <= reach ? null : new HandlingActivity.Problem(Failure.OUT_OF_REACH,
                 String.format(Locale.ROOT, "door '%s' is %.2f m away, reach is %.2f m", d.name(), dist, reach));
     }
 
     private Activity routeMove(String action, String goal, Person guided) {
         Optional<List<String>> route = sim.planner().route(position(), goal, knownClosedDoors, radius);
         if (route.isEmpty()) {
-            return new Failed(action, Failure.NO_ROUTE, "no route to '" + goal + "' avoiding doors seen closed "
+            return new Activity.Failed(this, action, Failure.NO_ROUTE, "no route to '" + goal + "' avoiding doors seen closed "
                     + knownClosedDoors);
         }
         List<Vec2> via = new ArrayList<>();
         route.get().forEach(n -> via.add(sim.plan().waypoint(n).position()));
-        return new Move(action + " via " + route.get(), goal, via, guided);
+        return new MoveActivity(this, action + " via " + route.get(), goal, via, guided);
     }
 
     private ActionResult run(Activity a) {
@@ -308,7 +311,7 @@ public final class Robot extends Agent {
         return activity == null ? null : activity.partner();
     }
 
-    private Vec2 avoid(Vec2 desired, Agent partner) {
+    Vec2 avoid(Vec2 desired, Agent partner) {
         intendedDirection = desired.normalized();
         return Steering.avoid(this, desired, sim.agents(), partner, false).velocity();
     }
@@ -319,236 +322,6 @@ public final class Robot extends Agent {
         Vec2 v = velocity();
         if (v.length() > 0.05) {
             heading = Math.atan2(v.y(), v.x());
-        }
-    }
-
-    /** Why a handling activity cannot proceed. */
-    private record Problem(Failure failure, String message) {
-    }
-
-    private abstract class Activity {
-        final String action;
-        final double start = sim.time();
-        ActionResult result;
-
-        Activity(String action) {
-            this.action = action;
-        }
-
-        void succeed(String message) {
-            result = ActionResult.ok(action, message, start, sim.time(), position());
-        }
-
-        void fail(Failure f, String message) {
-            result = ActionResult.fail(action, f, message, start, sim.time(), position());
-        }
-
-        abstract void control(double dt);
-
-        Agent partner() {
-            return null;
-        }
-    }
-
-    private final class Failed extends Activity {
-        Failed(String action, Failure f, String message) {
-            super(action);
-            fail(f, message);
-        }
-
-        @Override
-        void control(double dt) {
-            drive(Vec2.ZERO, dt);
-        }
-    }
-
-    private final class Move extends Activity {
-        private final PathFollower follower;
-        private final String goal;
-        private final Person guided;
-        private final double deadline;
-        private double bestRemaining;
-        private double lastProgress;
-        private double doorWaitStart = -1;
-        private double farSince = -1;
-
-        Move(String action, String goal, List<Vec2> via, Person guided) {
-            super(action);
-            this.goal = goal;
-            this.guided = guided;
-            this.follower = new PathFollower(sim.plan(), position(), via, ARRIVAL_TOLERANCE);
-            double length = follower.remaining(position());
-            this.deadline = start + (guided == null ? 3 : 6) * length / maxSpeed + 2 * spec.blockedSeconds()
-                    + spec.doorWaitSeconds() + 30;
-            this.bestRemaining = length;
-            this.lastProgress = start;
-        }
-
-        @Override
-        Agent partner() {
-            return guided;
-        }
-
-        @Override
-        void control(double dt) {
-            Vec2 p = position();
-            double now = sim.time();
-            if (now > deadline) {
-                fail(Failure.TIMEOUT, String.format(Locale.ROOT, "did not reach '%s' within %.1f s", goal,
-                        deadline - start));
-                return;
-            }
-            double factor = 1;
-            if (guided != null) {
-                double gd = guided.position().distance(p);
-                if (!guided.isPresent() || gd > GUIDE_WAIT_DISTANCE + 5) {
-                    farSince = farSince < 0 ? now : farSince;
-                    if (!guided.isPresent() || now - farSince > LOST_SECONDS) {
-                        fail(Failure.PERSON_LOST, String.format(Locale.ROOT, "person '%s' is %.1f m away",
-                                guided.name(), gd));
-                        return;
-                    }
-                } else {
-                    farSince = -1;
-                }
-                factor = gd > GUIDE_WAIT_DISTANCE ? 0 : gd > GUIDE_DISTANCE + 0.8
-                        ? (GUIDE_WAIT_DISTANCE - gd) / (GUIDE_WAIT_DISTANCE - GUIDE_DISTANCE - 0.8) : 1;
-            }
-            if (follower.arrived(p) && velocity().length() < 0.15) {
-                if (guided == null || guided.position().distance(p) <= GUIDE_ARRIVAL_RADIUS) {
-                    succeed("arrived at '" + goal + "'" + (guided == null ? "" : String.format(Locale.ROOT,
-                            " with '%s' %.2f m away", guided.name(), guided.position().distance(p))));
-                    return;
-                }
-                drive(Vec2.ZERO, dt);
-                lastProgress = now;
-                return;
-            }
-            Door closed = follower.closedDoorAhead(p, DOOR_SENSE_RANGE, sim);
-            if (closed != null) {
-                knownClosedDoors.add(closed.name());
-                if (doorWaitStart < 0 && velocity().length() < 0.05) {
-                    doorWaitStart = now;
-                }
-                if (doorWaitStart >= 0 && now - doorWaitStart >= spec.doorWaitSeconds()) {
-                    fail(Failure.DOOR_CLOSED, String.format(Locale.ROOT,
-                            "door '%s' on the route to '%s' stayed closed for %.1f s while waiting in front of it",
-                            closed.name(), goal,
-                            now - doorWaitStart));
-                    return;
-                }
-                approachDoor(p, closed, dt);
-                lastProgress = now;
-                return;
-            }
-            doorWaitStart = -1;
-            double remaining = follower.remaining(p);
-            if (remaining < bestRemaining - 0.1 || factor == 0) {
-                bestRemaining = Math.min(bestRemaining, remaining);
-                lastProgress = now;
-            } else if (now - lastProgress > spec.blockedSeconds()) {
-                fail(Failure.PATH_BLOCKED, String.format(Locale.ROOT,
-                        "no progress towards '%s' for %.1f s; obstructed near %s by %s", goal, now - lastProgress, p,
-                        sim.peopleNear(p, radius + 1.0)));
-                return;
-            }
-            drive(avoid(follower.desiredVelocity(p, maxSpeed * factor, maxAcceleration), guided), dt);
-        }
-
-        /** Creeps towards a closed door, stopping close enough to open it. */
-        private void approachDoor(Vec2 p, Door d, double dt) {
-            double gap = Segments.pointDistance(p, d.doorway().end1(), d.doorway().end2()) - radius - 0.35;
-            Vec2 desired = follower.desiredVelocity(p, maxSpeed, maxAcceleration);
-            double v = Math.min(desired.length(), Math.sqrt(2 * 0.9 * maxAcceleration * Math.max(0, gap)));
-            drive(desired.normalized().times(v), dt);
-        }
-    }
-
-    private final class FollowPerson extends Activity {
-        private final Person person;
-        private final TrailFollower follower;
-        private final double min;
-        private final double max;
-        private final double deadline;
-        private double farSince = -1;
-
-        FollowPerson(Person person, double min, double max, double timeout) {
-            super("follow(" + person.name() + ")");
-            this.person = person;
-            this.follower = new TrailFollower(Robot.this, person);
-            this.min = min;
-            this.max = max;
-            this.deadline = start + timeout;
-        }
-
-        @Override
-        Agent partner() {
-            return person;
-        }
-
-        @Override
-        void control(double dt) {
-            double now = sim.time();
-            double d = person.position().distance(position());
-            if (!person.isPresent()) {
-                fail(Failure.PERSON_LOST, "person '" + person.name() + "' left");
-                return;
-            }
-            if (!person.isWalking() && d <= max) {
-                succeed(String.format(Locale.ROOT, "'%s' stopped %.2f m away", person.name(), d));
-                return;
-            }
-            if (now > deadline) {
-                fail(Failure.TIMEOUT, String.format(Locale.ROOT, "still following '%s' after %.1f s", person.name(),
-                        now - start));
-                return;
-            }
-            if (d > max + 3) {
-                farSince = farSince < 0 ? now : farSince;
-                if (now - farSince > LOST_SECONDS) {
-                    fail(Failure.PERSON_LOST, String.format(Locale.ROOT, "person '%s' is %.1f m away", person.name(), d));
-                    return;
-                }
-            } else {
-                farSince = -1;
-            }
-            drive(avoid(follower.desiredVelocity((min + max) / 2, min), person), dt);
-        }
-    }
-
-    private final class Handle extends Activity {
-        private final Supplier<Problem> check;
-        private final Supplier<String> effect;
-        private final double end;
-
-        Handle(String action, Supplier<Problem> check, Supplier<String> effect) {
-            this(action, spec.handlingSeconds(), check, effect);
-        }
-
-        Handle(String action, double seconds, Supplier<Problem> check,
-               Supplier<String> effect) {
-            super(action);
-            this.check = check;
-            this.effect = effect;
-            this.end = start + seconds;
-            failIfNot();
-        }
-
-        private boolean failIfNot() {
-            Problem problem = check.get();
-            if (problem != null) {
-                fail(problem.failure(), problem.message());
-                return true;
-            }
-            return false;
-        }
-
-        @Override
-        void control(double dt) {
-            drive(Vec2.ZERO, dt);
-            if (sim.time() + 1e-9 >= end && !failIfNot()) {
-                succeed(effect.get());
-            }
         }
     }
 }
