@@ -11,7 +11,9 @@ import java.util.TreeSet;
 /**
  * A disc-shaped holonomic mobile robot. Its activities are blocking: each call advances virtual time
  * (stepping the whole simulation) until the activity succeeds or fails, and returns an
- * {@link ActionResult} with the reason. Calls are not re-entrant: do not call them from scripted events.
+ * {@link ActionResult} with the reason. Blocking calls are not allowed from scripted events. To move
+ * several robots at once, start moves with {@link #startMoveTo(String)} and await the
+ * {@link PendingAction}s.
  * Positions are metres, speeds m/s, durations virtual seconds.
  *
  * <p>The robot remembers doors it has seen closed (in line of sight within {@value #DOOR_SENSE_RANGE} m) until it sees
@@ -31,6 +33,7 @@ public final class Robot extends Agent {
     private final List<Item> carried = new ArrayList<>();
     private final Set<String> knownClosedDoors = new TreeSet<>();
     private Activity activity;
+    private PendingAction pending;
     private double heading;
     private Vec2 intendedDirection = Vec2.ZERO;
 
@@ -95,11 +98,37 @@ public final class Robot extends Agent {
     }
 
     /**
+     * Like {@link #moveTo(String)} but returns at once; the move progresses while the simulation is
+     * stepped (by {@link PendingAction#await()}, {@link Simulation#step()} or another robot's blocking call).
+     *
+     * @throws IllegalArgumentException for an unknown waypoint
+     * @throws IllegalStateException if the robot is busy with another activity
+     */
+    public PendingAction startMoveTo(String waypoint) {
+        sim.plan().waypoint(waypoint);
+        return start(routeMove("moveTo(" + waypoint + ")", waypoint, null));
+    }
+
+    /**
      * Drives straight through the listed waypoints in order (consecutive ones must be joined by a graph edge).
      *
      * @throws IllegalArgumentException for an empty list, unknown waypoints or missing edges
      */
     public ActionResult moveAlong(List<String> waypoints) {
+        return run(alongActivity(waypoints));
+    }
+
+    /**
+     * Like {@link #moveAlong(List)} but returns at once (see {@link #startMoveTo(String)}).
+     *
+     * @throws IllegalArgumentException for an empty list, unknown waypoints or missing edges
+     * @throws IllegalStateException if the robot is busy with another activity
+     */
+    public PendingAction startMoveAlong(List<String> waypoints) {
+        return start(alongActivity(waypoints));
+    }
+
+    private Activity alongActivity(List<String> waypoints) {
         Checks.notNull("waypoints", waypoints);
         if (waypoints.isEmpty()) {
             throw new IllegalArgumentException("moveAlong needs at least one waypoint");
@@ -112,7 +141,7 @@ public final class Robot extends Agent {
                         + waypoints.get(i) + "'");
             }
         }
-        return run(new MoveActivity(this, "moveAlong" + waypoints, waypoints.get(waypoints.size() - 1), via, null));
+        return new MoveActivity(this, "moveAlong" + waypoints, waypoints.get(waypoints.size() - 1), via, null);
     }
 
     /**
@@ -259,22 +288,32 @@ public final class Robot extends Agent {
     }
 
     private ActionResult run(Activity a) {
+        sim.requireNotStepping();
+        return start(a).await();
+    }
+
+    private PendingAction start(Activity a) {
         if (activity != null) {
             throw new IllegalStateException("robot '" + name + "' is busy with " + activity.action);
         }
-        sim.requireNotStepping();
         activity = a;
-        try {
-            while (a.result == null) {
-                sim.step();
-            }
-        } finally {
-            activity = null;
+        pending = new PendingAction(sim);
+        PendingAction p = pending;
+        if (a.result != null) {
+            finishActivity();
         }
-        ActionResult r = a.result.endingAt(sim.time(), position());
+        return p;
+    }
+
+    /** Closes the activity after the step in which it decided, so its end time includes that step. */
+    private void finishActivity() {
+        ActionResult r = activity.result.endingAt(sim.time(), position());
+        activity = null;
+        PendingAction p = pending;
+        pending = null;
         sim.record(new TraceEvent(r.endTime(), name, r.action(), r.position(), r.success(),
                 r.success() ? r.message() : r.failure() + ": " + r.message()));
-        return r;
+        p.complete(r);
     }
 
     void dropSilently(Item item) {
@@ -319,6 +358,9 @@ public final class Robot extends Agent {
     @Override
     void afterStep() {
         super.afterStep();
+        if (activity != null && activity.result != null) {
+            finishActivity();
+        }
         Vec2 v = velocity();
         if (v.length() > 0.05) {
             heading = Math.atan2(v.y(), v.x());
