@@ -59,7 +59,8 @@ public final class TracePicture {
             }
         }
         int lineHeight = 16;
-        BufferedImage img = new BufferedImage(Math.max(p.width, MIN_WIDTH), p.height + 10 + lineHeight * (events.size() + 1),
+        int legendLines = events.size() + 1 + (trace.events().size() > events.size() ? 1 : 0);
+        BufferedImage img = new BufferedImage(Math.max(p.width, MIN_WIDTH), p.height + 10 + lineHeight * legendLines,
                 BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         p.setup(g, true);
@@ -109,6 +110,10 @@ public final class TracePicture {
         int y = p.height + 10;
         p.font(g, 12);
         g.setColor(PlanPainter.TEXT);
+        int omitted = trace.events().size() - events.size();
+        if (omitted > 0) {
+            p.text(g, "(" + omitted + " later events not shown)", 10, y + lineHeight * (events.size() + 1));
+        }
         for (int i = 0; i < events.size(); i++) {
             TraceEvent e = events.get(i);
             String line = String.format(Locale.ROOT, "%2d  t=%7.2fs  %-8s %s %s%s", i + 1, e.time(), e.actor(),
