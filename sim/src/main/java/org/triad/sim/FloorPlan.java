@@ -471,7 +471,42 @@ public final class FloorPlan {
                 side(walls, r, false, b.minX(), b.minY(), b.maxY());
                 side(walls, r, false, b.maxX(), b.minY(), b.maxY());
             }
-            return walls;
+            return merged(walls);
+        }
+
+        /** Neighbouring rooms produce the same wall twice: merge collinear overlapping pieces into one. */
+        private static List<Wall> merged(List<Wall> walls) {
+            List<Wall> out = new ArrayList<>();
+            boolean[] used = new boolean[walls.size()];
+            for (int i = 0; i < walls.size(); i++) {
+                if (used[i]) {
+                    continue;
+                }
+                Wall w = walls.get(i);
+                boolean horizontal = Math.abs(w.a().y() - w.b().y()) < EPS;
+                double at = horizontal ? w.a().y() : w.a().x();
+                double lo = horizontal ? w.a().x() : w.a().y();
+                double hi = horizontal ? w.b().x() : w.b().y();
+                boolean grown = true;
+                while (grown) {
+                    grown = false;
+                    for (int j = i + 1; j < walls.size(); j++) {
+                        Wall v = walls.get(j);
+                        boolean vh = Math.abs(v.a().y() - v.b().y()) < EPS;
+                        double vat = vh ? v.a().y() : v.a().x();
+                        double vlo = vh ? v.a().x() : v.a().y();
+                        double vhi = vh ? v.b().x() : v.b().y();
+                        if (!used[j] && vh == horizontal && Math.abs(vat - at) < EPS && vlo <= hi + EPS && vhi >= lo - EPS) {
+                            used[j] = true;
+                            lo = Math.min(lo, vlo);
+                            hi = Math.max(hi, vhi);
+                            grown = true;
+                        }
+                    }
+                }
+                out.add(wall(horizontal, at, lo, hi));
+            }
+            return out;
         }
 
         /** One side of a room (fixed coordinate {@code at}, spanning lo..hi) minus door gaps and openings. */
