@@ -131,6 +131,7 @@ public final class Simulation {
     public Robot addRobot(String name, Vec2 position, RobotSpec spec) {
         requireNewAgentName(name);
         Checks.notNull("robot spec", spec);
+        requireNoTunnelling("robot '" + name + "'", spec.maxSpeed(), spec.radius());
         requireFreeSpot("robot '" + name + "'", Checks.notNull("position", position), spec.radius());
         Robot r = new Robot(this, name, spec);
         r.body = Bodies.disc(spec.radius(), position, ROBOT_DENSITY);
@@ -150,6 +151,7 @@ public final class Simulation {
     public Person addPerson(String name, Vec2 position, PersonSpec spec) {
         requireNewAgentName(name);
         Checks.notNull("person spec", spec);
+        requireNoTunnelling("person '" + name + "'", spec.maxSpeed(), spec.radius());
         requireFreeSpot("person '" + name + "'", Checks.notNull("position", position), spec.radius());
         return spawnPerson(name, position, spec);
     }
@@ -191,6 +193,15 @@ public final class Simulation {
             if (p.name.equals(name)) {
                 throw new IllegalArgumentException("duplicate robot or person name '" + name + "'");
             }
+        }
+    }
+
+    /** Continuous collision detection is off, so a disc must not move more than half its radius per step. */
+    private void requireNoTunnelling(String what, double maxSpeed, double radius) {
+        if (maxSpeed * dt > 0.5 * radius) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "%s: %.2f m/s moves %.3f m per %.4f s step, more than half its radius %.2f m; use a smaller step",
+                    what, maxSpeed, maxSpeed * dt, dt, radius));
         }
     }
 

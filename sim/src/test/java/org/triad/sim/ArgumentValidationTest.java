@@ -49,6 +49,8 @@ class ArgumentValidationTest {
         rejects("outside every room", () -> sim.addItem("x", new Vec2(-5, -5)));
         rejects("unknown room 'attic'", () -> sim.itemsIn("attic"));
         rejects("step", () -> Simulation.builder(Scenes.PLAN).stepSeconds(0));
+        rejects("smaller step", () -> Simulation.builder(Scenes.PLAN).stepSeconds(0.1).build()
+                .addPerson("runner", "room1", PersonSpec.defaults().withMaxSpeed(3)));
         rejects("duration", () -> sim.runFor(Double.NaN));
         sim.runFor(1);
         rejects("in the past", () -> sim.at(0.5));
