@@ -56,7 +56,8 @@ public final class EventScript {
 
     /**
      * Makes {@code people} persons stand in a row across the room or corridor at the middle of the segment
-     * between two waypoints, for {@code seconds} of virtual time; then they leave.
+     * between two waypoints, for {@code seconds} of virtual time; then they leave. They are named
+     * {@code blocker<k>.<i>} (k counts blockings from 1) and do not step aside for robots.
      *
      * @throws IllegalArgumentException for unknown waypoints, people &lt; 1 or a non-positive duration
      */
