@@ -183,6 +183,29 @@ public final class Robot extends Agent {
     }
 
     /**
+     * Drives to the waypoint nearest to the item, then straight towards it until the item is within
+     * 70% of {@link RobotSpec#reach()}, so that {@link #pick(String)} can follow. Fails like
+     * {@link #moveTo(String)}, or with ITEM_UNAVAILABLE for a removed or carried item.
+     *
+     * @throws IllegalArgumentException for an unknown item
+     */
+    public ActionResult approach(String item) {
+        Item it = sim.item(item);
+        String action = "approach(" + item + ")";
+        if (it.isRemoved() || it.holder().isPresent()) {
+            return run(new Activity.Failed(this, action, Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
+                    + (it.isRemoved() ? "gone" : "carried")));
+        }
+        Vec2 target = it.position();
+        Waypoint near = sim.plan().nearestWaypoint(target);
+        double d = near.position().distance(target);
+        double stopShort = 0.7 * spec.reach();
+        Vec2 stop = d <= stopShort ? null
+                : near.position().plus(target.minus(near.position()).times((d - stopShort) / d));
+        return run(routeMove(action, near.name(), null, stop));
+    }
+
+    /**
      * Picks the item; the robot centre must be within {@link RobotSpec#reach()} of it. Takes
      * {@link RobotSpec#handlingSeconds()}.
      *
@@ -277,13 +300,21 @@ public final class Robot extends Agent {
     }
 
     private Activity routeMove(String action, String goal, Person guided) {
+        return routeMove(action, goal, guided, null);
+    }
+
+    /** A move along the graph route to {@code goal}, then straight on to {@code finalPoint} if not null. */
+    private Activity routeMove(String action, String goal, Person guided, Vec2 finalPoint) {
         Optional<List<String>> route = sim.planner().route(position(), goal, knownClosedDoors, radius);
         if (route.isEmpty()) {
-            return new Activity.Failed(this, action, Failure.NO_ROUTE, "no route to '" + goal + "' avoiding doors seen closed "
-                    + knownClosedDoors);
+            return new Activity.Failed(this, action, Failure.NO_ROUTE, "no route to '" + goal
+                    + "' avoiding doors seen closed " + knownClosedDoors);
         }
         List<Vec2> via = new ArrayList<>();
         route.get().forEach(n -> via.add(sim.plan().waypoint(n).position()));
+        if (finalPoint != null) {
+            via.add(finalPoint);
+        }
         return new MoveActivity(this, action + " via " + route.get(), goal, via, guided);
     }
 

@@ -46,6 +46,20 @@ class ItemTest {
     }
 
     @Test
+    void approachBringsTheRobotWithinReachOfAnItemAwayFromWaypoints() {
+        Simulation sim = Scenes.sim(1);
+        Robot robot = sim.addRobot("r", "corridorWest", RobotSpec.defaults());
+        sim.addItem("linen", new Vec2(22.8, 0.9));
+        assertEquals(Failure.OUT_OF_REACH, robot.pick("linen").failure());
+        ActionResult r = robot.approach("linen");
+        assertTrue(r.success(), r::toString);
+        double d = robot.position().distance(sim.item("linen").position());
+        assertTrue(d <= robot.spec().reach() && d > 0.5, "robot stopped " + d + " m from the item");
+        assertTrue(robot.pick("linen").success());
+        assertEquals(Failure.ITEM_UNAVAILABLE, robot.approach("linen").failure());
+    }
+
+    @Test
     void scriptedRemovalMakesTheItemUnavailable() {
         Simulation sim = Scenes.sim(1);
         Robot robot = sim.addRobot("r", "room1", RobotSpec.defaults());
