@@ -1,0 +1,581 @@
+package org.triad.sim;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.SplittableRandom;
+import java.util.function.BooleanSupplier;
+
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.ContinuousDetectionMode;
+import org.dyn4j.world.World;
+
+/**
+ * A deterministic 2D simulation of a floor plan with robots, people, doors and items on dyn4j.
+ * Virtual time advances in fixed steps (default 1/60 s) only when {@link #step()} is called, directly
+ * or by a blocking {@link Robot} activity; there is no wall clock. For a given plan, seed and sequence of
+ * calls, every run produces the same trace. Units: metres, seconds, m/s, m/s^2. Not thread-safe.
+ */
+public final class Simulation {
+    private static final double ROBOT_DENSITY = 40;
+    private static final double PERSON_DENSITY = 20;
+
+    private final FloorPlan plan;
+    private final PathPlanner planner;
+    private final World<Body> world = new World<>();
+    private final double dt;
+    private final long seed;
+    private final SplittableRandom random;
+    private final boolean recordTrace;
+    private final List<Robot> robots = new ArrayList<>();
+    private final List<Person> people = new ArrayList<>();
+    private final Map<String, Door> doors = new LinkedHashMap<>();
+    private final Map<String, Item> items = new LinkedHashMap<>();
+    private final PriorityQueue<Scheduled> events = new PriorityQueue<>();
+    private final Trace trace = new Trace();
+    private List<Agent> agents = List.of();
+    private List<Waypoint> wanderTargets;
+    private long steps;
+    private long eventSeq;
+    private int blockings;
+    private boolean stepping;
+
+    private record Scheduled(double time, long seq, String label, Runnable action) implements Comparable<Scheduled> {
+        @Override
+        public int compareTo(Scheduled o) {
+            return time != o.time ? Double.compare(time, o.time) : Long.compare(seq, o.seq);
+        }
+    }
+
+    private Simulation(FloorPlan plan, long seed, double dt, boolean recordTrace) {
+        this.plan = plan;
+        this.planner = new PathPlanner(plan);
+        this.dt = dt;
+        this.seed = seed;
+        this.random = new SplittableRandom(seed);
+        this.recordTrace = recordTrace;
+        world.setGravity(0, 0);
+        world.getSettings().setStepFrequency(dt);
+        world.getSettings().setAtRestDetectionEnabled(false);
+        // Bodies move at most a few centimetres per step against 10 cm walls: no tunnelling, so the
+        // costly time-of-impact pass is switched off.
+        world.getSettings().setContinuousDetectionMode(ContinuousDetectionMode.NONE);
+        for (Wall w : plan.walls()) {
+            world.addBody(Bodies.wall(w.a(), w.b(), plan.wallThickness()));
+        }
+        for (Doorway d : plan.doorways()) {
+            Body body = Bodies.wall(d.end1(), d.end2(), plan.wallThickness());
+            world.addBody(body);
+            doors.put(d.name(), new Door(d, body));
+        }
+        for (ItemPlacement i : plan.items()) {
+            addItem(i.name(), i.position());
+        }
+    }
+
+    /** Starts a simulation of the plan (seed 0, step 1/60 s, trace on). */
+    public static Builder builder(FloorPlan plan) {
+        return new Builder(Checks.notNull("floor plan", plan));
+    }
+
+    /** Configures a {@link Simulation}. */
+    public static final class Builder {
+        private final FloorPlan plan;
+        private long seed;
+        private double dt = 1.0 / 60;
+        private boolean recordTrace = true;
+
+        private Builder(FloorPlan plan) {
+            this.plan = plan;
+        }
+
+        /** Seed of the random generator used by people's random choices. */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** Fixed step, seconds (0 &lt; step &lt;= 0.1). */
+        public Builder stepSeconds(double seconds) {
+            Checks.positive("step (s)", seconds);
+            if (seconds > 0.1) {
+                throw new IllegalArgumentException("step must be <= 0.1 s for stable physics, got " + seconds);
+            }
+            this.dt = seconds;
+            return this;
+        }
+
+        /** Whether to record a {@link TraceFrame} per step (needed for pictures). */
+        public Builder recordTrace(boolean on) {
+            this.recordTrace = on;
+            return this;
+        }
+
+        public Simulation build() {
+            return new Simulation(plan, seed, dt, recordTrace);
+        }
+    }
+
+    // ---- population ------------------------------------------------------------------------------
+
+    /** Adds a robot at a waypoint. @throws IllegalArgumentException on unknown waypoint or duplicate name */
+    public Robot addRobot(String name, String waypoint, RobotSpec spec) {
+        return addRobot(name, plan.waypoint(waypoint).position(), spec);
+    }
+
+    /** Adds a robot at a position (metres). @throws IllegalArgumentException if the spot is not free */
+    public Robot addRobot(String name, Vec2 position, RobotSpec spec) {
+        requireNewAgentName(name);
+        Checks.notNull("robot spec", spec);
+        requireNoTunnelling("robot '" + name + "'", spec.maxSpeed(), spec.radius());
+        requireFreeSpot("robot '" + name + "'", Checks.notNull("position", position), spec.radius());
+        Robot r = new Robot(this, name, spec);
+        r.body = Bodies.disc(spec.radius(), position, ROBOT_DENSITY);
+        world.addBody(r.body);
+        robots.add(r);
+        trace.addRobot(name);
+        refreshAgents();
+        return r;
+    }
+
+    /** Adds a standing person at a waypoint. */
+    public Person addPerson(String name, String waypoint, PersonSpec spec) {
+        return addPerson(name, plan.waypoint(waypoint).position(), spec);
+    }
+
+    /** Adds a standing person at a position (metres). @throws IllegalArgumentException if the spot is not free */
+    public Person addPerson(String name, Vec2 position, PersonSpec spec) {
+        requireNewAgentName(name);
+        Checks.notNull("person spec", spec);
+        requireNoTunnelling("person '" + name + "'", spec.maxSpeed(), spec.radius());
+        requireFreeSpot("person '" + name + "'", Checks.notNull("position", position), spec.radius());
+        return spawnPerson(name, position, spec);
+    }
+
+    private Person spawnPerson(String name, Vec2 position, PersonSpec spec) {
+        Person p = new Person(this, name, spec);
+        p.body = Bodies.disc(spec.radius(), position, PERSON_DENSITY);
+        world.addBody(p.body);
+        people.add(p);
+        trace.addPerson(name);
+        refreshAgents();
+        return p;
+    }
+
+    /** Adds an item at a position (metres) inside a room. */
+    public Item addItem(String name, Vec2 position) {
+        Checks.name("item name", name);
+        Checks.notNull("position", position);
+        if (items.containsKey(name)) {
+            throw new IllegalArgumentException("duplicate item '" + name + "'");
+        }
+        if (plan.roomAt(position).isEmpty()) {
+            throw new IllegalArgumentException("item '" + name + "' at " + position + " is outside every room");
+        }
+        Item i = new Item(this, name, position);
+        items.put(name, i);
+        trace.addItem(name);
+        return i;
+    }
+
+    private void requireNewAgentName(String name) {
+        Checks.name("name", name);
+        for (Robot r : robots) {
+            if (r.name.equals(name)) {
+                throw new IllegalArgumentException("duplicate robot or person name '" + name + "'");
+            }
+        }
+        for (Person p : people) {
+            if (p.name.equals(name)) {
+                throw new IllegalArgumentException("duplicate robot or person name '" + name + "'");
+            }
+        }
+    }
+
+    /** Continuous collision detection is off, so a disc must not move more than half its radius per step. */
+    private void requireNoTunnelling(String what, double maxSpeed, double radius) {
+        if (maxSpeed * dt > 0.5 * radius) {
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "%s: %.2f m/s moves %.3f m per %.4f s step, more than half its radius %.2f m; use a smaller step",
+                    what, maxSpeed, maxSpeed * dt, dt, radius));
+        }
+    }
+
+    private void requireFreeSpot(String what, Vec2 p, double radius) {
+        if (!isFree(p, radius)) {
+            throw new IllegalArgumentException(what + " at " + p + " would overlap a wall or lie outside every room");
+        }
+        for (Agent a : agents) {
+            if (a.position().distance(p) < a.radius + radius) {
+                throw new IllegalArgumentException(what + " at " + p + " would overlap '" + a.name + "'");
+            }
+        }
+    }
+
+    private void refreshAgents() {
+        List<Agent> list = new ArrayList<>(robots);
+        for (Person p : people) {
+            if (p.isPresent()) {
+                list.add(p);
+            }
+        }
+        agents = Collections.unmodifiableList(list);
+    }
+
+    // ---- lookup ----------------------------------------------------------------------------------
+
+    public FloorPlan plan() {
+        return plan;
+    }
+
+    public Trace trace() {
+        return trace;
+    }
+
+    public long seed() {
+        return seed;
+    }
+
+    /** Fixed step, seconds. */
+    public double stepSeconds() {
+        return dt;
+    }
+
+    /** Virtual time since start, seconds. */
+    public double time() {
+        return steps * dt;
+    }
+
+    /** Number of steps taken. */
+    public long steps() {
+        return steps;
+    }
+
+    /** @throws IllegalArgumentException for an unknown name */
+    public Robot robot(String name) {
+        for (Robot r : robots) {
+            if (r.name.equals(name)) {
+                return r;
+            }
+        }
+        throw new IllegalArgumentException("unknown robot '" + name + "'");
+    }
+
+    /** @throws IllegalArgumentException for an unknown name */
+    public Person person(String name) {
+        for (Person p : people) {
+            if (p.name.equals(name)) {
+                return p;
+            }
+        }
+        throw new IllegalArgumentException("unknown person '" + name + "'");
+    }
+
+    /** @throws IllegalArgumentException for an unknown name */
+    public Item item(String name) {
+        Item i = name == null ? null : items.get(name);
+        if (i == null) {
+            throw new IllegalArgumentException("unknown item '" + name + "'; known: " + items.keySet());
+        }
+        return i;
+    }
+
+    /** @throws IllegalArgumentException for an unknown name */
+    public Door door(String name) {
+        Door d = name == null ? null : doors.get(name);
+        if (d == null) {
+            throw new IllegalArgumentException("unknown door '" + name + "'; known: " + doors.keySet());
+        }
+        return d;
+    }
+
+    public List<Robot> robots() {
+        return Collections.unmodifiableList(robots);
+    }
+
+    /** People currently present, in the order added. */
+    public List<Person> people() {
+        List<Person> out = new ArrayList<>();
+        people.stream().filter(Person::isPresent).forEach(out::add);
+        return out;
+    }
+
+    public List<Item> items() {
+        return List.copyOf(items.values());
+    }
+
+    /**
+     * Items lying in the room (not carried, not removed), in the order added.
+     *
+     * @throws IllegalArgumentException for an unknown room
+     */
+    public List<Item> itemsIn(String room) {
+        Room r = plan.room(room);
+        List<Item> out = new ArrayList<>();
+        for (Item i : items.values()) {
+            if (!i.isRemoved() && i.holder().isEmpty() && i.room().map(x -> x.equals(r)).orElse(false)) {
+                out.add(i);
+            }
+        }
+        return out;
+    }
+
+    public List<Door> doors() {
+        return List.copyOf(doors.values());
+    }
+
+    // ---- world changes ---------------------------------------------------------------------------
+
+    public void openDoor(String name) {
+        Door d = door(name);
+        if (!d.isOpen()) {
+            record(new TraceEvent(time(), "world", "door " + name + " opened", d.doorway().center(), true, ""));
+        }
+        d.open();
+    }
+
+    /** Requests the door to close; it closes as soon as nobody stands in the doorway. */
+    public void closeDoor(String name) {
+        Door d = door(name);
+        if (d.isOpen()) {
+            record(new TraceEvent(time(), "world", "door " + name + " closed", d.doorway().center(), true, ""));
+        }
+        d.requestClose();
+    }
+
+    public void lockDoor(String name, boolean locked) {
+        door(name).setLocked(locked);
+    }
+
+    public void removeItem(String name) {
+        Item i = item(name);
+        record(new TraceEvent(time(), "world", "item " + name + " removed", i.position(), true, ""));
+        i.remove();
+    }
+
+    /** Removes a person from the world. */
+    public void removePerson(String name) {
+        Person p = person(name);
+        if (p.isPresent()) {
+            p.leave();
+            world.removeBody(p.body);
+            refreshAgents();
+        }
+    }
+
+    /** Events at virtual time {@code t} seconds (not in the past). */
+    public EventScript at(double t) {
+        Checks.finite("event time (s)", t);
+        if (t < time() - 1e-9) {
+            throw new IllegalArgumentException("event time " + t + " s is in the past (now " + time() + " s)");
+        }
+        return new EventScript(this, t);
+    }
+
+    void schedule(double t, String label, Runnable action) {
+        events.add(new Scheduled(t, eventSeq++, label, action));
+    }
+
+    void blockSegment(Vec2 a, Vec2 b, int count, double until, String label) {
+        Vec2 mid = a.plus(b).times(0.5);
+        Vec2 n = b.minus(a).normalized().perpendicular();
+        Rect r = plan.roomAt(mid).orElseThrow().bounds();
+        double plus = exit(mid, n, r);
+        double minus = exit(mid, n.times(-1), r);
+        double spacing = (plus + minus) / count;
+        int id = ++blockings;
+        List<String> names = new ArrayList<>();
+        for (int i = 0; i < count; i++) {
+            String name = "blocker" + id + "." + (i + 1);
+            spawnPerson(name, mid.plus(n.times(-minus + spacing * (i + 0.5))), PersonSpec.defaults())
+                    .setYieldsToRobots(false);
+            names.add(name);
+        }
+        record(new TraceEvent(time(), "world", "block " + label, mid, true, names.toString()));
+        schedule(until, "unblock " + label, () -> {
+            names.forEach(this::removePerson);
+            record(new TraceEvent(time(), "world", "unblock " + label, mid, true, ""));
+        });
+    }
+
+    /** Distance from p along unit direction d to the border of r. */
+    private static double exit(Vec2 p, Vec2 d, Rect r) {
+        double t = Double.POSITIVE_INFINITY;
+        if (d.x() > 1e-9) {
+            t = Math.min(t, (r.maxX() - p.x()) / d.x());
+        } else if (d.x() < -1e-9) {
+            t = Math.min(t, (r.minX() - p.x()) / d.x());
+        }
+        if (d.y() > 1e-9) {
+            t = Math.min(t, (r.maxY() - p.y()) / d.y());
+        } else if (d.y() < -1e-9) {
+            t = Math.min(t, (r.minY() - p.y()) / d.y());
+        }
+        return t;
+    }
+
+    // ---- time ------------------------------------------------------------------------------------
+
+    /** Advances virtual time by one step: due events, doors, agent controllers, physics, trace. */
+    public void step() {
+        requireNotStepping();
+        stepping = true;
+        try {
+            double now = time();
+            while (!events.isEmpty() && events.peek().time() <= now + 1e-9) {
+                events.poll().action().run();
+            }
+            for (Door d : doors.values()) {
+                d.update(agents, plan.wallThickness());
+            }
+            for (Agent a : agents) {
+                a.control(dt);
+            }
+            world.step(1);
+            steps++;
+            for (Agent a : agents) {
+                a.afterStep();
+            }
+            if (recordTrace) {
+                recordFrame();
+            }
+        } finally {
+            stepping = false;
+        }
+    }
+
+    /** Advances virtual time by {@code seconds} (rounded up to whole steps). */
+    public void runFor(double seconds) {
+        Checks.nonNegative("duration (s)", seconds);
+        long n = (long) Math.ceil(seconds / dt - 1e-9);
+        for (long i = 0; i < n; i++) {
+            step();
+        }
+    }
+
+    /** Steps until the condition holds or {@code timeoutSeconds} pass; returns whether it holds. */
+    public boolean runUntil(BooleanSupplier condition, double timeoutSeconds) {
+        Checks.notNull("condition", condition);
+        Checks.nonNegative("timeout (s)", timeoutSeconds);
+        double end = time() + timeoutSeconds;
+        while (!condition.getAsBoolean()) {
+            if (time() >= end - 1e-9) {
+                return false;
+            }
+            step();
+        }
+        return true;
+    }
+
+    // ---- internals -------------------------------------------------------------------------------
+
+    void requireNotStepping() {
+        if (stepping) {
+            throw new IllegalStateException("blocking simulation calls are not allowed inside a step (e.g. from events)");
+        }
+    }
+
+    /** Waypoints that are not in a doorway, where wandering people may pause. */
+    List<Waypoint> wanderTargets() {
+        if (wanderTargets == null) {
+            List<Waypoint> list = new ArrayList<>();
+            for (Waypoint w : plan.waypoints()) {
+                boolean inDoorway = false;
+                for (Doorway d : plan.doorways()) {
+                    inDoorway |= Segments.pointDistance(w.position(), d.end1(), d.end2()) < 0.5;
+                }
+                if (!inDoorway) {
+                    list.add(w);
+                }
+            }
+            wanderTargets = list.isEmpty() ? plan.waypoints() : List.copyOf(list);
+        }
+        return wanderTargets;
+    }
+
+    List<Agent> agents() {
+        return agents;
+    }
+
+    PathPlanner planner() {
+        return planner;
+    }
+
+    SplittableRandom random() {
+        return random;
+    }
+
+    void record(TraceEvent e) {
+        trace.add(e);
+    }
+
+    boolean isFree(Vec2 p, double radius) {
+        if (plan.roomAt(p).isEmpty() || plan.wallClearance(p) < radius) {
+            return false;
+        }
+        for (Door d : doors.values()) {
+            if (!d.isOpen() && Segments.pointDistance(p, d.doorway().end1(), d.doorway().end2())
+                    < radius + plan.wallThickness() / 2) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    String peopleNear(Vec2 p, double range) {
+        List<String> names = new ArrayList<>();
+        for (Agent a : agents) {
+            if (a.position().distance(p) - a.radius <= range && a.position().distance(p) > 1e-9) {
+                names.add(a.name);
+            }
+        }
+        return names.isEmpty() ? "nobody (static obstacle)" : names.toString();
+    }
+
+    private void recordFrame() {
+        int nr = robots.size();
+        double[] rx = new double[nr];
+        double[] ry = new double[nr];
+        double[] rh = new double[nr];
+        for (int i = 0; i < nr; i++) {
+            Vec2 p = robots.get(i).position();
+            rx[i] = p.x();
+            ry[i] = p.y();
+            rh[i] = robots.get(i).heading();
+        }
+        int np = people.size();
+        double[] px = new double[np];
+        double[] py = new double[np];
+        for (int i = 0; i < np; i++) {
+            Person p = people.get(i);
+            Vec2 pos = p.isPresent() ? p.position() : null;
+            px[i] = pos == null ? Double.NaN : pos.x();
+            py[i] = pos == null ? Double.NaN : pos.y();
+        }
+        double[] ix = new double[items.size()];
+        double[] iy = new double[items.size()];
+        int k = 0;
+        for (Item it : items.values()) {
+            Vec2 pos = it.isRemoved() ? null : it.position();
+            ix[k] = pos == null ? Double.NaN : pos.x();
+            iy[k] = pos == null ? Double.NaN : pos.y();
+            k++;
+        }
+        boolean[] open = new boolean[doors.size()];
+        k = 0;
+        for (Door d : doors.values()) {
+            open[k++] = d.isOpen();
+        }
+        trace.add(new TraceFrame(time(), rx, ry, rh, px, py, ix, iy, open));
+    }
+
+    @Override
+    public String toString() {
+        return String.format(Locale.ROOT, "Simulation[t=%.2fs, %d robots, %d people, %d items]", time(), robots.size(),
+                people().size(), items.size());
+    }
+}
