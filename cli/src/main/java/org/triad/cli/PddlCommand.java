@@ -11,21 +11,14 @@ import org.triad.runtime.schema.PddlTranslator;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 
 /** {@code triad pddl DIR --state S.state --goal "IsAt(ward3)" -o OUT}: the planning task a goal gives, for any planner. */
 @Command(name = "pddl", mixinStandardHelpOptions = true,
 		description = { "Write the PDDL domain and problem that planning a goal from a situation gives (OUT/domain.pddl, OUT/problem.pddl),",
 				"exactly as the Planner component translates them at runtime; hand them to any PDDL planner." })
 public final class PddlCommand implements Callable<Integer> {
-	@Parameters(index = "0", paramLabel = "DIR", description = "the application's folder")
-	private Path dir;
-
-	@Option(names = "--state", required = true, paramLabel = "S.state|NAME", description = "a .state file of the application, or a situation's name")
-	private String state;
-
-	@Option(names = "--situation", paramLabel = "NAME", description = "which situation of the .state file (default: its first)")
-	private String situation;
+	@CommandLine.Mixin
+	private SituationOptions app;
 
 	@Option(names = "--goal", required = true, paramLabel = "GOAL(args)", description = "the goal, e.g. \"IsAt(ward3)\"")
 	private String goal;
@@ -38,8 +31,9 @@ public final class PddlCommand implements Callable<Integer> {
 
 	@Override
 	public Integer call() throws Exception {
-		ModelSession session = ModelSession.open(dir);
-		State s = session.situation(state, situation);
+		SituationOptions.Opened opened = app.open();
+		ModelSession session = opened.session();
+		State s = opened.state();
 		ModelSession.Call call = ModelSession.parseCall(goal, s);
 		ModelGoal g = new ModelGoal(session.schema, call.name(), call.args());
 		PddlTranslator.Task task = new PddlTranslator(session.schema).translate(s, g.schema(), g.binding());

@@ -1,6 +1,5 @@
 package org.triad.cli;
 
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -19,7 +18,6 @@ import org.triad.runtime.schema.ModelTask;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 
 /** {@code triad run DIR --state S.state --task "Fetch(gauze, storage, ward3)"}: a dry run through RefArc. */
 @Command(name = "run", mixinStandardHelpOptions = true,
@@ -27,14 +25,8 @@ import picocli.CommandLine.Parameters;
 				"whose actions do exactly what their postconditions say. Prints the Status stream.",
 				"Exit code: 0 when the task completed, 1 when it was aborted, 2 for bad input." })
 public final class RunCommand implements Callable<Integer> {
-	@Parameters(index = "0", paramLabel = "DIR", description = "the application's folder")
-	private Path dir;
-
-	@Option(names = "--state", required = true, paramLabel = "S.state|NAME", description = "a .state file of the application, or a situation's name")
-	private String state;
-
-	@Option(names = "--situation", paramLabel = "NAME", description = "which situation of the .state file (default: its first)")
-	private String situation;
+	@CommandLine.Mixin
+	private SituationOptions app;
 
 	@Option(names = "--task", required = true, paramLabel = "TASK(args)", description = "the task, e.g. \"Fetch(gauze, storage, ward3)\"")
 	private String task;
@@ -55,8 +47,9 @@ public final class RunCommand implements Callable<Integer> {
 
 	@Override
 	public Integer call() {
-		ModelSession session = ModelSession.open(dir);
-		State s = session.situation(state, situation);
+		SituationOptions.Opened opened = app.open();
+		ModelSession session = opened.session();
+		State s = opened.state();
 		ModelSession.Call call = ModelSession.parseCall(task, s);
 		ModelTask instance = new ModelTask(session.schema, call.name(), call.args());
 		DryRunWorld world = new DryRunWorld(session.schema, s);
