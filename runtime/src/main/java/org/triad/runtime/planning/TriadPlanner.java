@@ -13,7 +13,8 @@ import org.triad.runtime.pddl.Problem;
  * <ol>
  * <li>a single open goal: A* with the FF heuristic, bounded in expansions (on graph-like problems
  *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
- * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking for the first goal, then the first two, ... each stage
+ * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
+ *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
  *     continuing from the previous stage's end state;</li>
  * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
  *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
@@ -116,7 +117,13 @@ public final class TriadPlanner implements Planner {
             done.add(order.get(i));
             boolean last = i == order.size() - 1;
             int[] goals = Grounder.sortedUnique(done);
-            BestFirstSearch.Result r = search.run(state, goals, last ? q.goalNeg() : new int[0], 1, STAGE_WEIGHT, false, STAGE_EVALUATIONS);
+            int[] neg = last ? q.goalNeg() : new int[0];
+            BestFirstSearch.Result r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, true, STAGE_EVALUATIONS);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND && r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
+                r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, false, STAGE_EVALUATIONS);
+            }
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
