@@ -11,7 +11,9 @@ import org.triad.runtime.pddl.Problem;
  * Triad's own planning engine. Grounds through {@link GroundedProblemCache} (so successive goals on
  * the same objects and static facts only pay for search), then:
  * <ol>
- * <li>a single open goal: A* with the FF heuristic, bounded in expansions (on graph-like problems
+ * <li>a single open goal in a graph-like task (every relevant action needs one fact): breadth-first
+ *     search over facts ({@link UnaryGraphSearch}), exact;</li>
+ * <li>a single open goal otherwise: A* with the FF heuristic, bounded in expansions (on graph-like problems
  *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
  * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
  *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
@@ -68,15 +70,26 @@ public final class TriadPlanner implements Planner {
             return PlanResult.unsolvable(q.unsolvableReason(), new PlanResult.Stats(groundMs, 0, 0, 0));
         }
         SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
-        FfHeuristic h = new FfHeuristic(task);
-        Successors succ = new Successors(task);
+        SearchTask.Scratch scratch = task.takeScratch();
+        try {
+            return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+        } finally {
+            task.returnScratch(scratch);
+        }
+    }
+
+    private PlanResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
+                              long searchStart, long deadline) {
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
         long[] effort = new long[2];
         int[] plan = null;
 
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
-        if (open.size() <= 1) {
+        if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
+            plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
+            if (plan == null) return PlanResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
+        } else if (open.size() <= 1) {
             BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
