@@ -25,6 +25,7 @@ import org.triad.runtime.pddl.Problem;
 import org.triad.runtime.planning.GroundAction;
 import org.triad.runtime.planning.Plan;
 import org.triad.runtime.planning.PlanResult;
+import org.triad.runtime.planning.PlanValidator;
 import org.triad.runtime.planning.Planner;
 
 /**
@@ -32,7 +33,8 @@ import org.triad.runtime.planning.Planner;
  * PDDL4J's parser; FF (enforced hill-climbing, then greedy search) or HSP searches with the timeout
  * passed explicitly in milliseconds (the default of 600 is silently read as ms). Calls are
  * serialised: PDDL4J keeps grounding state in static fields. Its loggers are switched off, since
- * without its memory-measuring agent every search logs an ERROR.
+ * without its memory-measuring agent every search logs an ERROR. Its plans are checked with
+ * {@link PlanValidator}: 3.8.3 returns invalid plans on some inputs, reported here as errors.
  */
 public final class Pddl4jPlanner implements Planner {
     /** Which PDDL4J search to run. */
@@ -69,9 +71,16 @@ public final class Pddl4jPlanner implements Planner {
             File p = dir.resolve("problem.pddl").toFile();
             Files.writeString(d.toPath(), PddlWriter.write(domain));
             Files.writeString(p.toPath(), PddlWriter.write(problem));
+            PlanResult r;
             synchronized (LOCK) {
-                return solveLocked(d, p, timeout);
+                r = solveLocked(d, p, timeout);
             }
+            if (r.isSolved()) {
+                // PDDL4J 3.8.3 sometimes reports wrong plans (its encoding can drop actions or goals)
+                PlanValidator.Report report = PlanValidator.validate(domain, problem, r.plan());
+                if (!report.valid()) return PlanResult.error("PDDL4J returned a plan that does not validate: " + report.message());
+            }
+            return r;
         } catch (IOException e) {
             return PlanResult.error("PDDL4J input could not be written: " + e.getMessage());
         } catch (RuntimeException | StackOverflowError e) {
