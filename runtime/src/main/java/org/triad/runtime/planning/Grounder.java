@@ -428,10 +428,17 @@ final class Grounder {
     }
 
     static int[] sortedUnique(List<Integer> xs) {
-        return xs.stream().mapToInt(Integer::intValue).sorted().distinct().toArray();
+        int[] a = new int[xs.size()];
+        for (int i = 0; i < a.length; i++) a[i] = xs.get(i);
+        return sortedUnique(a);
     }
 
     static int[] sortedUnique(int[] xs) {
-        return Arrays.stream(xs).sorted().distinct().toArray();
+        if (xs.length == 0) return xs;
+        int[] a = xs.clone();
+        Arrays.sort(a);
+        int n = 1;
+        for (int i = 1; i < a.length; i++) if (a[i] != a[n - 1]) a[n++] = a[i];
+        return n == a.length ? a : Arrays.copyOf(a, n);
     }
 }
