@@ -98,8 +98,8 @@ public final class TriadPlanner implements Planner {
                 return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
             }
         } else {
-            // the agenda may use a quarter of the time; the complete search gets the rest
-            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 4;
+            // the agenda may use a tenth of the time; the complete search gets the rest
+            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
             plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
         }
         if (plan == null && System.nanoTime() < deadline) {
