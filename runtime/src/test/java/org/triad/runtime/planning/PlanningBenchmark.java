@@ -23,6 +23,7 @@ import org.triad.runtime.pddl.Problem;
  * goal with the same statics costs. Problems slower than 10 s are run once.
  * Run from the repository root:
  * {@code mvn -B -q -pl runtime test-compile && java -Xmx256m -cp runtime/target/classes:runtime/target/test-classes org.triad.runtime.planning.PlanningBenchmark ../shared/benchmarks/planning}
+ * Without arguments the benchmarks are found beside the repository root ({@code ../shared}).
  * Optional second argument: a substring filter on problem paths.
  */
 public final class PlanningBenchmark {
@@ -30,7 +31,11 @@ public final class PlanningBenchmark {
     private static final Duration TIMEOUT = Duration.ofSeconds(60);
 
     public static void main(String[] args) throws Exception {
-        Path root = Path.of(args.length > 0 ? args[0] : "../shared/benchmarks/planning");
+        Path root = args.length > 0 ? Path.of(args[0]) : sharedBenchmarks();
+        if (!Files.isDirectory(root.resolve("hospital")) || !Files.isDirectory(root.resolve("ipc"))) {
+            System.err.println("error: no planning benchmarks (hospital/, ipc/) under " + root.toAbsolutePath().normalize());
+            System.exit(2);
+        }
         String filter = args.length > 1 ? args[1] : "";
         Map<String, Integer> optimal = new HashMap<>();
         for (String line : Files.readAllLines(root.resolve("hospital/optimal.tsv"))) {
@@ -116,6 +121,23 @@ public final class PlanningBenchmark {
                     opt == null || !name.startsWith("hospital") ? "-" : opt.toString(), last.status(), validated,
                     last.stats().expanded(), last.stats().evaluated(), peak >> 20);
         }
+    }
+
+    /**
+     * {@code shared/benchmarks/planning} beside the repository root: the root is the nearest
+     * directory at or above the working directory whose pom.xml is triad-parent's.
+     */
+    static Path sharedBenchmarks() throws java.io.IOException {
+        for (Path d = Path.of(System.getProperty("user.dir")).toAbsolutePath(); d != null; d = d.getParent()) {
+            Path pom = d.resolve("pom.xml");
+            // a module's pom names triad-parent in its <parent> section: look at the project's own id
+            if (Files.isRegularFile(pom)
+                    && Files.readString(pom).replaceAll("(?s)<parent>.*?</parent>", "").contains("<artifactId>triad-parent</artifactId>")) {
+                Path parent = d.getParent();
+                return (parent == null ? d : parent).resolve("shared/benchmarks/planning");
+            }
+        }
+        return Path.of("../shared/benchmarks/planning");
     }
 
     private static double median(double[] xs, int n) {
