@@ -62,7 +62,7 @@ final class Grounder {
         fluent = new boolean[predNames.size()];
         for (Action a : domain.actions()) {
             List<Normalizer.EffectLit> effs = new ArrayList<>();
-            normalizer.effects(a.effects(), paramSubst(a), effs, new ArrayList<>());
+            normalizer.effects(a.effects(), Map.of(), effs, new ArrayList<>());
             for (Normalizer.EffectLit e : effs) fluent[pred(e.atom())] = true;
         }
         for (Problem.NumericFact f : problem.numericInit()) numeric.put(numericKey(f.function(), f.args()), f.value());
@@ -79,11 +79,6 @@ final class Grounder {
         for (Schema s : schemas) {
             if (s.fluentLits == 0) join(s, s.emptyBinding(), new boolean[s.pos.length], s.pos.length);
         }
-    }
-
-    /** Action parameters stay variables during effect normalization. */
-    private static Map<String, String> paramSubst(Action a) {
-        return Map.of();
     }
 
     int pred(Formula.Atom a) {

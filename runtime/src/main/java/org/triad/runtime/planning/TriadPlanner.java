@@ -13,8 +13,9 @@ import org.triad.runtime.pddl.Problem;
  * <ol>
  * <li>a single open goal in a graph-like task (every relevant action needs one fact): breadth-first
  *     search over facts ({@link UnaryGraphSearch}), exact;</li>
- * <li>a single open goal otherwise: A* with the FF heuristic, bounded in expansions (on graph-like problems
- *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
+ * <li>a single open goal otherwise: A* with the FF heuristic, bounded in evaluations (the FF
+ *     heuristic is not admissible, so shortest plans are likely, not guaranteed; on near-graph
+ *     tasks such as a delivery the relaxed plan is close to exact);</li>
  * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
  *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
  *     continuing from the previous stage's end state;</li>
@@ -22,7 +23,8 @@ import org.triad.runtime.pddl.Problem;
  *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
  *     exhausting it proves the problem unsolvable);</li>
  * </ol>
- * and finally removes redundant actions from the plan.
+ * and finally removes redundant actions from the plan. Grounding is not interruptible: the timeout
+ * applies to search.
  */
 public final class TriadPlanner implements Planner {
     /** Heuristic evaluations allowed to one bounded stage before falling back. */
@@ -63,6 +65,8 @@ public final class TriadPlanner implements Planner {
             q = cache.get(domain, problem).query(problem);
         } catch (PlanningInputException e) {
             return PlanResult.error(e.getMessage());
+        } catch (RuntimeException e) {
+            return PlanResult.error("internal error while grounding: " + e);
         }
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
