@@ -25,6 +25,7 @@ import org.triad.runtime.pddl.Problem;
 import org.triad.runtime.planning.GroundAction;
 import org.triad.runtime.planning.Plan;
 import org.triad.runtime.planning.PlanResult;
+import org.triad.runtime.planning.PlanValidator;
 import org.triad.runtime.planning.Planner;
 
 /**
@@ -32,7 +33,8 @@ import org.triad.runtime.planning.Planner;
  * PDDL4J's parser; FF (enforced hill-climbing, then greedy search) or HSP searches with the timeout
  * passed explicitly in milliseconds (the default of 600 is silently read as ms). Calls are
  * serialised: PDDL4J keeps grounding state in static fields. Its loggers are switched off, since
- * without its memory-measuring agent every search logs an ERROR.
+ * without its memory-measuring agent every search logs an ERROR. Its plans are checked with
+ * {@link PlanValidator}: 3.8.3 returns invalid plans on some inputs, reported here as errors.
  */
 public final class Pddl4jPlanner implements Planner {
     /** Which PDDL4J search to run. */
@@ -69,9 +71,16 @@ public final class Pddl4jPlanner implements Planner {
             File p = dir.resolve("problem.pddl").toFile();
             Files.writeString(d.toPath(), PddlWriter.write(domain));
             Files.writeString(p.toPath(), PddlWriter.write(problem));
+            PlanResult r;
             synchronized (LOCK) {
-                return solveLocked(d, p, timeout);
+                r = solveLocked(d, p, timeout);
             }
+            if (r.isSolved()) {
+                // PDDL4J 3.8.3 sometimes reports wrong plans (its encoding can drop actions or goals)
+                PlanValidator.Report report = PlanValidator.validate(domain, problem, r.plan());
+                if (!report.valid()) return PlanResult.error("PDDL4J returned a plan that does not validate: " + report.message());
+            }
+            return r;
         } catch (IOException e) {
             return PlanResult.error("PDDL4J input could not be written: " + e.getMessage());
         } catch (RuntimeException | StackOverflowError e) {
@@ -102,6 +111,9 @@ public final class Pddl4jPlanner implements Planner {
             return PlanResult.unsolvable("PDDL4J's encoding simplified the goal to false", new PlanResult.Stats(groundMs, 0, 0, 0));
         }
         long remainingMs = Math.max(1, timeout.toMillis() - (long) groundMs);
+        // FF runs enforced hill-climbing and then greedy search, each with the full limit (measured:
+        // a 10 s limit returned after 20 s), so each gets half of what remains
+        if (search == Search.FF) remainingMs = Math.max(1, remainingMs / 2);
         int timeoutMs = (int) Math.min(Integer.MAX_VALUE, remainingMs);
         AbstractStateSpacePlanner planner = search == Search.FF
                 ? new FF(timeoutMs, Heuristic.Type.FAST_FORWARD, 1.0, false, 0)
@@ -112,7 +124,8 @@ public final class Pddl4jPlanner implements Planner {
         PlanResult.Stats stats = new PlanResult.Stats(groundMs, searchMs, 0, 0);
         if (plan == null) {
             // 3.8.3 returns null both when the search space is exhausted and on timeout
-            if (searchMs < 0.9 * timeoutMs) return PlanResult.unsolvable("PDDL4J's search ended without a plan", stats);
+            double limit = search == Search.FF ? 2.0 * timeoutMs : timeoutMs;
+            if (searchMs < 0.9 * limit) return PlanResult.unsolvable("PDDL4J's search ended without a plan", stats);
             return PlanResult.timeout(stats);
         }
         List<String> constants = coded.getConstants();

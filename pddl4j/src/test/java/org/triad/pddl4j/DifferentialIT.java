@@ -67,7 +67,13 @@ class DifferentialIT {
                     else bothUnsolvable++;
                 }
                 case TIMEOUT -> pddl4jUndecided++;
-                default -> pddl4jErrors++;
+                default -> {
+                    if (theirs.message().contains("does not validate")) {
+                        if (pddl4jInvalid++ == 0) firstInvalid = label + "\n" + theirs.message();
+                    } else {
+                        pddl4jErrors++;
+                    }
+                }
             }
         }
         System.out.printf("differential: %.1f s, %d tasks, both solved %d, both unsolvable %d, only triad solved %d, "

@@ -31,6 +31,16 @@ final class BestFirstSearch {
     }
 
     Result run(int[] init, int[] goalPos, int[] goalNeg, int weightG, int weightH, boolean preferred, long evaluationLimit) {
+        return run(init, goalPos, goalNeg, weightG, weightH, preferred, false, evaluationLimit);
+    }
+
+    /**
+     * With {@code helpfulOnly}, only successors by helpful actions are generated (as in FF's
+     * enforced hill-climbing): incomplete, but it keeps wide tasks cheap; callers fall back.
+     */
+    Result run(int[] init, int[] goalPos, int[] goalNeg, int weightG, int weightH, boolean preferred, boolean helpfulOnly,
+               long evaluationLimit) {
+        preferred |= helpfulOnly;
         StateSpace space = new StateSpace();
         long expanded = 0;
         long evaluated = 1;
@@ -77,9 +87,18 @@ final class BestFirstSearch {
             expanded++;
             int[] state = space.state(node);
             int[] helpful = preferred ? helpfulOf[node] : null;
-            int n = successors.applicable(state);
-            int[] ops = new int[n];
-            for (int i = 0; i < n; i++) ops[i] = successors.get(i);
+            int[] ops;
+            if (helpfulOnly) {
+                int[] sorted = helpful.clone();
+                java.util.Arrays.sort(sorted);
+                int kept = 0;
+                for (int o : sorted) if (successors.isApplicable(state, o)) sorted[kept++] = o;
+                ops = java.util.Arrays.copyOf(sorted, kept);
+            } else {
+                int n = successors.applicable(state);
+                ops = new int[n];
+                for (int i = 0; i < n; i++) ops[i] = successors.get(i);
+            }
             for (int o : ops) {
                 int[] child = successors.apply(state, o);
                 int existing = space.find(child);

@@ -62,7 +62,7 @@ final class Grounder {
         fluent = new boolean[predNames.size()];
         for (Action a : domain.actions()) {
             List<Normalizer.EffectLit> effs = new ArrayList<>();
-            normalizer.effects(a.effects(), paramSubst(a), effs, new ArrayList<>());
+            normalizer.effects(a.effects(), Map.of(), effs, new ArrayList<>());
             for (Normalizer.EffectLit e : effs) fluent[pred(e.atom())] = true;
         }
         for (Problem.NumericFact f : problem.numericInit()) numeric.put(numericKey(f.function(), f.args()), f.value());
@@ -79,11 +79,6 @@ final class Grounder {
         for (Schema s : schemas) {
             if (s.fluentLits == 0) join(s, s.emptyBinding(), new boolean[s.pos.length], s.pos.length);
         }
-    }
-
-    /** Action parameters stay variables during effect normalization. */
-    private static Map<String, String> paramSubst(Action a) {
-        return Map.of();
     }
 
     int pred(Formula.Atom a) {
@@ -428,10 +423,17 @@ final class Grounder {
     }
 
     static int[] sortedUnique(List<Integer> xs) {
-        return xs.stream().mapToInt(Integer::intValue).sorted().distinct().toArray();
+        int[] a = new int[xs.size()];
+        for (int i = 0; i < a.length; i++) a[i] = xs.get(i);
+        return sortedUnique(a);
     }
 
     static int[] sortedUnique(int[] xs) {
-        return Arrays.stream(xs).sorted().distinct().toArray();
+        if (xs.length == 0) return xs;
+        int[] a = xs.clone();
+        Arrays.sort(a);
+        int n = 1;
+        for (int i = 1; i < a.length; i++) if (a[i] != a[n - 1]) a[n++] = a[i];
+        return n == a.length ? a : Arrays.copyOf(a, n);
     }
 }

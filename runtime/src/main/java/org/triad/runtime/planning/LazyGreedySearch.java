@@ -5,8 +5,9 @@ import java.util.Arrays;
 /**
  * Lazy greedy best-first search with preferred operators and two heuristics, as in LAMA's first
  * iteration: a successor is queued under its parent's values and evaluated only when expanded.
- * Four queues (FF, landmark count, and their preferred-operator versions) are used round-robin,
- * and the preferred ones are boosted every time either heuristic improves. Complete with a closed
+ * Three queues (FF over all successors, FF and landmark count over preferred successors; a fourth
+ * landmark queue over all successors costs too much memory on wide tasks such as logistics) are
+ * used round-robin, and the preferred ones are boosted every time either heuristic improves. Complete with a closed
  * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
  */
 final class LazyGreedySearch {
@@ -29,8 +30,9 @@ final class LazyGreedySearch {
 
     private int entry(int parent, int op) {
         if (entries == entryParent.length) {
-            entryParent = Arrays.copyOf(entryParent, entries * 2);
-            entryOp = Arrays.copyOf(entryOp, entries * 2);
+            int cap = entries + (entries >> 1);
+            entryParent = Arrays.copyOf(entryParent, cap);
+            entryOp = Arrays.copyOf(entryOp, cap);
         }
         entryParent[entries] = parent;
         entryOp[entries] = op;
@@ -39,9 +41,9 @@ final class LazyGreedySearch {
 
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg) {
         StateSpace space = new StateSpace();
-        int nq = landmarks == null ? 2 : 4;
-        NodeHeap[] queues = new NodeHeap[nq];
-        for (int i = 0; i < nq; i++) queues[i] = new NodeHeap();
+        int nq = landmarks == null ? 2 : 3;
+        LongHeap[] queues = new LongHeap[nq];
+        for (int i = 0; i < nq; i++) queues[i] = new LongHeap();
         int[] priority = new int[nq];
         long[][] accepted = landmarks == null ? null : new long[1024][];
         long expanded = 0;
@@ -90,7 +92,7 @@ final class LazyGreedySearch {
             }
             if (progress) {
                 priority[1] -= 1000;
-                if (nq == 4) priority[3] -= 1000;
+                if (nq == 3) priority[2] -= 1000;
             }
             int nh = heuristic.helpfulCount();
             int[] helpful = new int[nh];
@@ -103,10 +105,7 @@ final class LazyGreedySearch {
                 boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
                 queues[0].push(h, id);
                 if (preferred) queues[1].push(h, id);
-                if (nq == 4) {
-                    queues[2].push(hl, id);
-                    if (preferred) queues[3].push(hl, id);
-                }
+                if (preferred && nq == 3) queues[2].push(hl, id);
             }
         }
         return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);

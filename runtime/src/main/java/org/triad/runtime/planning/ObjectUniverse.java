@@ -15,7 +15,7 @@ final class ObjectUniverse {
     final List<String> names = new ArrayList<>();
     final Map<String, Integer> ids = new HashMap<>();
     private final Map<String, Set<String>> ancestors = new HashMap<>();
-    private final Map<String, int[]> byType = new HashMap<>();
+    private final Map<List<String>, int[]> byType = new HashMap<>();
     private final List<Set<String>> objectTypes = new ArrayList<>();
 
     ObjectUniverse(Domain domain, Problem problem) {
@@ -68,8 +68,7 @@ final class ObjectUniverse {
 
     /** Object ids of a type (or of any of several types, for {@code either}), ascending. */
     int[] ofTypes(List<String> types) {
-        String key = String.join(" ", types);
-        return byType.computeIfAbsent(key, k -> {
+        return byType.computeIfAbsent(types, k -> {
             List<Integer> out = new ArrayList<>();
             for (int i = 0; i < names.size(); i++) {
                 for (String t : types) {

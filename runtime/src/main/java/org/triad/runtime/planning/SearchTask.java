@@ -22,6 +22,21 @@ final class SearchTask {
     final Grounder grounder;
     private int[][] addOf;
     private int[][] delOf;
+    /** Relevant sub-tasks by their operator set: successive goals often need the same operators. */
+    private final java.util.Map<java.util.BitSet, SearchTask> subtasks = new java.util.LinkedHashMap<>(16, 0.75f, true);
+    /** Scratch space (heuristic and successor arrays) reused by the next solve that takes it. */
+    private final java.util.concurrent.atomic.AtomicReference<Scratch> scratch = new java.util.concurrent.atomic.AtomicReference<>();
+
+    record Scratch(FfHeuristic heuristic, Successors successors) { }
+
+    Scratch takeScratch() {
+        Scratch s = scratch.getAndSet(null);
+        return s != null ? s : new Scratch(new FfHeuristic(this), new Successors(this));
+    }
+
+    void returnScratch(Scratch s) {
+        scratch.set(s);
+    }
 
     SearchTask(Grounder grounder, List<GroundOp> opList, int numFacts) {
         this.grounder = grounder;
@@ -74,7 +89,7 @@ final class SearchTask {
      * their preconditions. Any plan stays a plan after dropping the other operators, so search and
      * heuristic only need these.
      */
-    SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
+    synchronized SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
         if (addOf == null) {
             addOf = invert(add, numFacts);
             delOf = invert(del, numFacts);
@@ -99,8 +114,15 @@ final class SearchTask {
             }
         }
         if (count == ops.length) return this;
+        java.util.BitSet key = new java.util.BitSet(ops.length);
+        for (int o = 0; o < ops.length; o++) if (opRel[o]) key.set(o);
+        SearchTask cached = subtasks.get(key);
+        if (cached != null) return cached;
         List<GroundOp> kept = new ArrayList<>(count);
         for (int o = 0; o < ops.length; o++) if (opRel[o]) kept.add(ops[o]);
-        return new SearchTask(grounder, kept, numFacts);
+        SearchTask sub = new SearchTask(grounder, kept, numFacts);
+        subtasks.put(key, sub);
+        if (subtasks.size() > 16) subtasks.remove(subtasks.keySet().iterator().next());
+        return sub;
     }
 }

@@ -11,15 +11,20 @@ import org.triad.runtime.pddl.Problem;
  * Triad's own planning engine. Grounds through {@link GroundedProblemCache} (so successive goals on
  * the same objects and static facts only pay for search), then:
  * <ol>
- * <li>a single open goal: A* with the FF heuristic, bounded in expansions (on graph-like problems
- *     the relaxed plan is exact or nearly so, which gives shortest plans quickly);</li>
- * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking for the first goal, then the first two, ... each stage
+ * <li>a single open goal in a graph-like task (every relevant action needs one fact): breadth-first
+ *     search over facts ({@link UnaryGraphSearch}), exact;</li>
+ * <li>a single open goal otherwise: A* with the FF heuristic, bounded in evaluations (the FF
+ *     heuristic is not admissible, so shortest plans are likely, not guaranteed; on near-graph
+ *     tasks such as a delivery the relaxed plan is close to exact);</li>
+ * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
+ *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
  *     continuing from the previous stage's end state;</li>
  * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
  *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
  *     exhausting it proves the problem unsolvable);</li>
  * </ol>
- * and finally removes redundant actions from the plan.
+ * and finally removes redundant actions from the plan. Grounding is not interruptible: the timeout
+ * applies to search.
  */
 public final class TriadPlanner implements Planner {
     /** Heuristic evaluations allowed to one bounded stage before falling back. */
@@ -60,6 +65,8 @@ public final class TriadPlanner implements Planner {
             q = cache.get(domain, problem).query(problem);
         } catch (PlanningInputException e) {
             return PlanResult.error(e.getMessage());
+        } catch (RuntimeException e) {
+            return PlanResult.error("internal error while grounding: " + e);
         }
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
@@ -67,15 +74,26 @@ public final class TriadPlanner implements Planner {
             return PlanResult.unsolvable(q.unsolvableReason(), new PlanResult.Stats(groundMs, 0, 0, 0));
         }
         SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
-        FfHeuristic h = new FfHeuristic(task);
-        Successors succ = new Successors(task);
+        SearchTask.Scratch scratch = task.takeScratch();
+        try {
+            return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+        } finally {
+            task.returnScratch(scratch);
+        }
+    }
+
+    private PlanResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
+                              long searchStart, long deadline) {
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
         long[] effort = new long[2];
         int[] plan = null;
 
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
-        if (open.size() <= 1) {
+        if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
+            plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
+            if (plan == null) return PlanResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
+        } else if (open.size() <= 1) {
             BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
@@ -84,8 +102,8 @@ public final class TriadPlanner implements Planner {
                 return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
             }
         } else {
-            // the agenda may use a quarter of the time; the complete search gets the rest
-            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 4;
+            // the agenda may use a tenth of the time; the complete search gets the rest
+            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
             plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
         }
         if (plan == null && System.nanoTime() < deadline) {
@@ -116,7 +134,13 @@ public final class TriadPlanner implements Planner {
             done.add(order.get(i));
             boolean last = i == order.size() - 1;
             int[] goals = Grounder.sortedUnique(done);
-            BestFirstSearch.Result r = search.run(state, goals, last ? q.goalNeg() : new int[0], 1, STAGE_WEIGHT, false, STAGE_EVALUATIONS);
+            int[] neg = last ? q.goalNeg() : new int[0];
+            BestFirstSearch.Result r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, true, STAGE_EVALUATIONS);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND && r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
+                r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, false, STAGE_EVALUATIONS);
+            }
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
