@@ -67,6 +67,7 @@ class WorkshopGeneratorTest {
 		assertEquals(green, bolt.getMethod("getColor").invoke(b));
 		assertEquals(0.25, bolt.getMethod("getMass").invoke(b));
 		assertEquals(true, bolt.getMethod("isFragile").invoke(b));
+		assertEquals(List.class, workshop.load("IWorld").getMethod("allLists").getReturnType(), "the world has a property lists");
 		assertEquals("IsAt", ((DomainObject) workshop.load("domain.IsAt").getConstructor(String.class).newInstance("m")).typeName());
 	}
 
