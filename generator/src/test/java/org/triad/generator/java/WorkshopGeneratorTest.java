@@ -81,6 +81,14 @@ class WorkshopGeneratorTest {
 	}
 
 	@Test
+	void situationsStoreIntLiteralsOfDoublesAsDoubles() {
+		State bench = situation(workshop, "Bench");
+		assertEquals(Optional.of(2.0), bench.valueOf(new org.triad.runtime.app.Atom("Arm", "reach", List.of(new EnumValue("Color", "GREEN")))));
+		assertEquals(1.0, ((org.triad.runtime.app.GenericObject) bench.object("b1").orElseThrow()).attributes().get("mass"));
+		assertEquals(4, ((org.triad.runtime.app.GenericObject) bench.object("b1").orElseThrow()).attributes().get("size"));
+	}
+
+	@Test
 	void actionExecutorConvertsArgumentsToTheirJavaTypes() throws Exception {
 		State bench = situation(workshop, "Bench");
 		StateBackedActors actors = new StateBackedActors(workshop, schemaOf(workshop), bench);
