@@ -11,6 +11,8 @@ import org.triad.dsl.triad.ObjectDeclaration;
 import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.triad.Situation;
 import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.typing.TriadType;
+import org.triad.dsl.typing.TriadTypeSystem;
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.GenericObject;
 import org.triad.runtime.app.State;
@@ -29,7 +31,9 @@ public final class SituationReader {
 			for (SituationObject o : d.getObjects()) {
 				Map<String, Object> attributes = new LinkedHashMap<>();
 				for (AttributeAssignment a : o.getAssignments()) {
-					attributes.put(a.getAttribute().getName(), literal(SchemaBuilder.expr(a.getValue())));
+					Object value = literal(SchemaBuilder.expr(a.getValue()));
+					attributes.put(a.getAttribute().getName(),
+							TriadTypeSystem.typeOf(a.getAttribute().getType()).kind() == TriadType.Kind.DOUBLE ? asDouble(value) : value);
 				}
 				b.object(new GenericObject(o.getName(), d.getType().getName(), attributes));
 			}
@@ -40,11 +44,19 @@ public final class SituationReader {
 			if (fact instanceof PropertyCall call) {
 				b.fact(evaluator.atom((Expr.Call) SchemaBuilder.expr(call), objects, Map.of()));
 			} else if (fact instanceof BinaryExpression eq && eq.getLeft() instanceof PropertyCall call) {
-				Atom atom = evaluator.atom((Expr.Call) SchemaBuilder.expr(call), objects, Map.of());
-				b.value(atom, evaluator.eval(SchemaBuilder.expr(eq.getRight()), objects, Map.of()));
+				Expr.Call c = (Expr.Call) SchemaBuilder.expr(call);
+				Atom atom = evaluator.atom(c, objects, Map.of());
+				Object value = evaluator.eval(SchemaBuilder.expr(eq.getRight()), objects, Map.of());
+				boolean isDouble = schema.property(c.actor(), c.property()).map(p -> "double".equals(p.type())).orElse(false);
+				b.value(atom, isDouble ? asDouble(value) : value);
 			}
 		}
 		return b.build();
+	}
+
+	/** An int literal where a double is expected is the double, as the value a robot reports would be. */
+	private static Object asDouble(Object value) {
+		return value instanceof Integer i ? Double.valueOf(i) : value;
 	}
 
 	private static Object literal(Expr e) {

@@ -52,24 +52,24 @@ class BehaviourTemplate {
 
 				@«im.ref("java.lang.Override")»
 				public «state» currentState() {
-					«state».Builder builder = «state».builder();
-					«list»<«domainObject»> objects = new «im.ref("java.util.ArrayList")»<>();
+					«state».Builder «names.stateBuilderVariable» = «state».builder();
+					«list»<«domainObject»> «names.objectsVariable» = new «im.ref("java.util.ArrayList")»<>();
 					«FOR c : classes»
 						«objectsQuery(c, im)»
 					«ENDFOR»
-					builder.objects(objects);
+					«names.stateBuilderVariable».objects(«names.objectsVariable»);
 					«FOR c : candidateTypes»
-						«list»<«im.ref(names.qualifiedDomainClass(c))»> «names.candidatesVariable(c)» = ofType(objects, «im.ref(names.qualifiedDomainClass(c))».class);
+						«list»<«im.ref(names.qualifiedDomainClass(c))»> «names.candidatesVariable(c)» = «names.ofTypeMethod»(«names.objectsVariable», «im.ref(names.qualifiedDomainClass(c))».class);
 					«ENDFOR»
 					«FOR a : actors»
 						«FOR p : a.properties»
 							«propertyQuery(a, p, im)»
 						«ENDFOR»
 					«ENDFOR»
-					return builder.build();
+					return «names.stateBuilderVariable».build();
 				}
 
-				private static <T> «list»<T> ofType(«list»<«domainObject»> objects, «im.ref("java.lang.Class")»<T> type) {
+				private static <T> «list»<T> «names.ofTypeMethod»(«list»<«domainObject»> objects, «im.ref("java.lang.Class")»<T> type) {
 					«list»<T> result = new «im.ref("java.util.ArrayList")»<>();
 					for («domainObject» o : objects) {
 						if (type.isInstance(o)) {
@@ -84,7 +84,7 @@ class BehaviourTemplate {
 
 	/** A class of the domain: the objects of it that exist now. */
 	def String objectsQuery(DomainClass c, Imports im) '''
-		objects.addAll(«im.ref("java.util.Objects")».requireNonNull(this.«names.worldField».«names.objectsMethod(c)»(), "«names.worldInterface».«names.objectsMethod(c)»() returned null"));
+		«names.objectsVariable».addAll(«im.ref("java.util.Objects")».requireNonNull(this.«names.worldField».«names.objectsMethod(c)»(), "«names.worldInterface».«names.objectsMethod(c)»() returned null"));
 	'''
 
 	/** A property: queried for every combination of candidate arguments. */
@@ -98,12 +98,12 @@ class BehaviourTemplate {
 		val record = if (TriadNames.isBoolean(p.type))
 			'''
 				if («call») {
-					builder.fact(«atom»);
+					«names.stateBuilderVariable».fact(«atom»);
 				}
 			'''
 		else
 			'''
-				builder.value(«atom», «call»);
+				«names.stateBuilderVariable».value(«atom», «call»);
 			'''
 		loops(p.parameters, 0, record, im)
 	}
@@ -153,7 +153,7 @@ class BehaviourTemplate {
 			 */
 			public class «names.actionExecutorClass» implements «im.ref("org.triad.refarc.ActionRunner")» {
 				«fields(im)»
-				private final «im.ref("org.triad.runtime.schema.Transitions")» transitions = new «im.ref("org.triad.runtime.schema.Transitions")»(«im.ref(names.qualifiedSchemaClass)».«names.schemaField»);
+				private final «im.ref("org.triad.runtime.schema.Transitions")» «names.transitionsField» = new «im.ref("org.triad.runtime.schema.Transitions")»(«im.ref(names.qualifiedSchemaClass)».«names.schemaField»);
 
 				public «names.actionExecutorClass»(«im.ref(names.qualifiedRobotInterface)» «names.robotField», «im.ref(names.qualifiedWorldInterface)» «names.worldField») {
 					«fieldAssignments(im)»
@@ -161,44 +161,60 @@ class BehaviourTemplate {
 
 				/** The first conjunct of the action's precondition that does not hold in {@code now}. */
 				@«im.ref("java.lang.Override")»
-				public «im.ref("java.util.Optional")»<«string»> violatedPrecondition(«groundAction» action, «im.ref("org.triad.runtime.app.State")» now) {
-					«im.ref("org.triad.runtime.schema.ActionSchema")» schema = this.transitions.schemaOf(action);
-					«im.ref("java.util.Map")»<«string», «object»> binding = this.transitions.binding(schema, action);
-					for («im.ref("org.triad.runtime.schema.Expr")» part : «im.ref("org.triad.runtime.schema.Exprs")».conjuncts(schema.pre())) {
-						if (!this.transitions.evaluator().holds(part, now, binding)) {
-							return «im.ref("java.util.Optional")».of(«im.ref("org.triad.runtime.schema.Exprs")».show(part));
+				public «im.ref("java.util.Optional")»<«string»> violatedPrecondition(«groundAction» «names.actionParameter», «im.ref("org.triad.runtime.app.State")» «names.nowParameter») {
+					«im.ref("org.triad.runtime.schema.ActionSchema")» «names.actionSchemaVariable» = this.«names.transitionsField».schemaOf(«names.actionParameter»);
+					«im.ref("java.util.Map")»<«string», «object»> «names.bindingVariable» = this.«names.transitionsField».binding(«names.actionSchemaVariable», «names.actionParameter»);
+					for («im.ref("org.triad.runtime.schema.Expr")» «names.conjunctVariable» : «im.ref("org.triad.runtime.schema.Exprs")».conjuncts(«names.actionSchemaVariable».pre())) {
+						if (!this.«names.transitionsField».evaluator().holds(«names.conjunctVariable», «names.nowParameter», «names.bindingVariable»)) {
+							return «im.ref("java.util.Optional")».of(«im.ref("org.triad.runtime.schema.Exprs")».show(«names.conjunctVariable»));
 						}
 					}
 					return «im.ref("java.util.Optional")».empty();
 				}
 
 				@«im.ref("java.lang.Override")»
-				public boolean execute(«groundAction» action) {
-					this.transitions.schemaOf(action);
-					return switch (action.actor() + "." + action.action()) {
+				public boolean execute(«groundAction» «names.actionParameter») {
+					this.«names.transitionsField».schemaOf(«names.actionParameter»);
+					return switch («names.actionParameter».actor() + "." + «names.actionParameter».action()) {
 						«FOR a : actors»
 							«FOR act : a.actions»
 								«actionCall(a, act, im)»
 							«ENDFOR»
 						«ENDFOR»
-						default -> throw new «iae»("no method for action " + action);
+						default -> throw new «iae»("no method for action " + «names.actionParameter»);
 					};
 				}
 
-				private static <T> T arg(«groundAction» action, int i, «im.ref("java.lang.Class")»<T> type) {
-					«object» value = action.args().get(i);
-					if (!type.isInstance(value)) {
-						throw new «iae»("argument " + (i + 1) + " of " + action + " is not a " + type.getSimpleName() + ": " + describe(value));
-					}
-					return type.cast(value);
-				}
+				«argumentHelpers(actors, im)»
+			}
+		'''
+	}
 
-				private static double doubleArg(«groundAction» action, int i) {
-					return arg(action, i, «im.ref("java.lang.Number")».class).doubleValue();
+	/** The executor's argument conversions; the double and enum ones only where an action needs them. */
+	private def String argumentHelpers(List<Actor> actors, Imports im) {
+		val kinds = actors.flatMap[actions].flatMap[parameters].map[TriadTypeSystem.typeOf(type).kind].toSet
+		val groundAction = im.ref("org.triad.runtime.app.GroundAction")
+		val object = im.ref("java.lang.Object")
+		val cls = im.ref("java.lang.Class")
+		val action = names.actionParameter
+		'''
+			private static <T> T «names.argumentMethod»(«groundAction» «action», int i, «cls»<T> type) {
+				«object» value = «action».args().get(i);
+				if (!type.isInstance(value)) {
+					throw new «im.ref("java.lang.IllegalArgumentException")»("argument " + (i + 1) + " of " + «action» + " is not a " + type.getSimpleName() + ": " + «names.describeValueMethod»(value));
 				}
+				return type.cast(value);
+			}
+			«IF kinds.contains(TriadType.Kind.DOUBLE)»
 
-				private static <E extends «im.ref("java.lang.Enum")»<E>> E enumArg(«groundAction» action, int i, «im.ref("java.lang.Class")»<E> type, «string» enumeration) {
-					«object» value = action.args().get(i);
+				private static double «names.doubleArgumentMethod»(«groundAction» «action», int i) {
+					return «names.argumentMethod»(«action», i, «im.ref("java.lang.Number")».class).doubleValue();
+				}
+			«ENDIF»
+			«IF kinds.contains(TriadType.Kind.ENUM)»
+
+				private static <E extends «im.ref("java.lang.Enum")»<E>> E «names.enumArgumentMethod»(«groundAction» «action», int i, «cls»<E> type, «im.ref("java.lang.String")» enumeration) {
+					«object» value = «action».args().get(i);
 					if (value instanceof «im.ref("org.triad.runtime.app.EnumValue")» e && e.enumeration().equals(enumeration)) {
 						for (E constant : type.getEnumConstants()) {
 							if (constant.name().equals(e.literal())) {
@@ -206,12 +222,12 @@ class BehaviourTemplate {
 							}
 						}
 					}
-					return arg(action, i, type);
+					return «names.argumentMethod»(«action», i, type);
 				}
+			«ENDIF»
 
-				private static «string» describe(«object» value) {
-					return value == null ? "null" : value + " (" + value.getClass().getName() + ")";
-				}
+			private static «im.ref("java.lang.String")» «names.describeValueMethod»(«object» value) {
+				return value == null ? "null" : value + " (" + value.getClass().getName() + ")";
 			}
 		'''
 	}
@@ -223,13 +239,14 @@ class BehaviourTemplate {
 
 	private def String argument(Parameter p, int i, Imports im) {
 		val t = TriadTypeSystem.typeOf(p.type)
+		val action = names.actionParameter
 		switch (t.kind) {
-			case BOOLEAN: '''arg(action, «i», «im.ref("java.lang.Boolean")».class)'''
-			case INT: '''arg(action, «i», «im.ref("java.lang.Integer")».class)'''
-			case DOUBLE: '''doubleArg(action, «i»)'''
-			case STRING: '''arg(action, «i», «im.ref("java.lang.String")».class)'''
-			case ENUM: '''enumArg(action, «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class, «JavaLiterals.string(t.domainType.name)»)'''
-			default: '''arg(action, «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class)'''
+			case BOOLEAN: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.Boolean")».class)'''
+			case INT: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.Integer")».class)'''
+			case DOUBLE: '''«names.doubleArgumentMethod»(«action», «i»)'''
+			case STRING: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.String")».class)'''
+			case ENUM: '''«names.enumArgumentMethod»(«action», «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class, «JavaLiterals.string(t.domainType.name)»)'''
+			default: '''«names.argumentMethod»(«action», «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class)'''
 		}
 	}
 

@@ -66,11 +66,11 @@ class GoalTemplate {
 
 				@«override»
 				public boolean isSatisfiedIn(«im.ref("org.triad.runtime.app.State")» «names.stateParameter») {
-					«im.ref("java.util.Map")»<«string», «object»> binding = new «im.ref("java.util.LinkedHashMap")»<>();
+					«im.ref("java.util.Map")»<«string», «object»> «names.bindingVariable» = new «im.ref("java.util.LinkedHashMap")»<>();
 					«FOR p : g.parameters»
-						binding.put("«p.name»", this.«names.goalField(p)»);
+						«names.bindingVariable».put(«JavaLiterals.string(p.name)», this.«names.goalField(p)»);
 					«ENDFOR»
-					return «names.evaluatorConstant».holds(«names.conditionConstant», «names.stateParameter», binding);
+					return «names.evaluatorConstant».holds(«names.conditionConstant», «names.stateParameter», «names.bindingVariable»);
 				}
 
 				@«override»

@@ -40,41 +40,41 @@ class SchemaTemplate {
 		'''
 			/** What the runtime knows of application {@code «s.name»}: types, actor properties and actions, goals. Generated: do not edit. */
 			public final class «names.schemaClass» {
-				public static final «appSchema» «names.schemaField» = build();
+				public static final «appSchema» «names.schemaField» = «names.schemaBuildMethod»();
 
 				private «names.schemaClass»() {
 				}
 
-				private static «appSchema» build() {
-					«builder» b = «appSchema».builder(«JavaLiterals.string(s.name)», «JavaLiterals.string(s.robot)», «JavaLiterals.string(s.world)»);
-					«names.schemaPartMethod("types")»(b);
-					«names.schemaPartMethod("properties")»(b);
-					«names.schemaPartMethod("actions")»(b);
-					«names.schemaPartMethod("goals")»(b);
-					return b.build();
+				private static «appSchema» «names.schemaBuildMethod»() {
+					«builder» «names.schemaBuilderVariable» = «appSchema».builder(«JavaLiterals.string(s.name)», «JavaLiterals.string(s.robot)», «JavaLiterals.string(s.world)»);
+					«names.schemaPartMethod("types")»(«names.schemaBuilderVariable»);
+					«names.schemaPartMethod("properties")»(«names.schemaBuilderVariable»);
+					«names.schemaPartMethod("actions")»(«names.schemaBuilderVariable»);
+					«names.schemaPartMethod("goals")»(«names.schemaBuilderVariable»);
+					return «names.schemaBuilderVariable».build();
 				}
 
-				private static void «names.schemaPartMethod("types")»(«builder» b) {
+				private static void «names.schemaPartMethod("types")»(«builder» «names.schemaBuilderVariable») {
 					«FOR t : s.types.values»
-						b.type(«type(t, im)»);
+						«names.schemaBuilderVariable».type(«type(t, im)»);
 					«ENDFOR»
 				}
 
-				private static void «names.schemaPartMethod("properties")»(«builder» b) {
+				private static void «names.schemaPartMethod("properties")»(«builder» «names.schemaBuilderVariable») {
 					«FOR p : s.properties»
-						b.property(«property(p, im)»);
+						«names.schemaBuilderVariable».property(«property(p, im)»);
 					«ENDFOR»
 				}
 
-				private static void «names.schemaPartMethod("actions")»(«builder» b) {
+				private static void «names.schemaPartMethod("actions")»(«builder» «names.schemaBuilderVariable») {
 					«FOR a : s.actions»
-						b.action(«action(a, im)»);
+						«names.schemaBuilderVariable».action(«action(a, im)»);
 					«ENDFOR»
 				}
 
-				private static void «names.schemaPartMethod("goals")»(«builder» b) {
+				private static void «names.schemaPartMethod("goals")»(«builder» «names.schemaBuilderVariable») {
 					«FOR g : s.goals.values»
-						b.goal(«goal(g, im)»);
+						«names.schemaBuilderVariable».goal(«goal(g, im)»);
 					«ENDFOR»
 				}
 			}

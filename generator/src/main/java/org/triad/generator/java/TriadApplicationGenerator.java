@@ -1,6 +1,9 @@
 package org.triad.generator.java;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
@@ -9,6 +12,7 @@ import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.generator.AbstractGenerator;
 import org.eclipse.xtext.generator.IFileSystemAccess2;
 import org.eclipse.xtext.generator.IGeneratorContext;
+import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.ActorKind;
 import org.triad.dsl.triad.ActorModel;
 import org.triad.dsl.triad.Application;
@@ -42,14 +46,12 @@ public class TriadApplicationGenerator extends AbstractGenerator {
 		Application app = TriadFactory.eINSTANCE.createApplication();
 		app.setName(applicationName(input.getURI()));
 		app.setDomain((ClassDiagram) input.getContents().get(0));
+		List<Actor> robots = new ArrayList<>();
+		List<Actor> worlds = new ArrayList<>();
 		for (Resource r : input.getResourceSet().getResources()) {
 			for (EObject root : r.getContents()) {
 				if (root instanceof ActorModel m && m.getActor() != null) {
-					if (m.getActor().getKind() == ActorKind.ROBOT) {
-						app.setRobot(m.getActor());
-					} else {
-						app.setWorld(m.getActor());
-					}
+					(m.getActor().getKind() == ActorKind.ROBOT ? robots : worlds).add(m.getActor());
 				} else if (root instanceof GoalModel m) {
 					app.getGoals().addAll(m.getGoals());
 				} else if (root instanceof TaskModel m) {
@@ -59,7 +61,18 @@ public class TriadApplicationGenerator extends AbstractGenerator {
 				}
 			}
 		}
+		app.setRobot(theOne(robots, "robot", app));
+		app.setWorld(theOne(worlds, "world", app));
 		return app;
+	}
+
+	private static Actor theOne(List<Actor> actors, String kind, Application app) {
+		if (actors.size() != 1) {
+			throw new IllegalStateException("application '" + app.getName() + "' needs exactly one " + kind + " to generate Java, found "
+					+ (actors.isEmpty() ? "none" : actors.stream().map(a -> a.getName() + " (" + a.eResource().getURI().lastSegment() + ")")
+							.collect(Collectors.joining(", "))));
+		}
+		return actors.get(0);
 	}
 
 	private static String applicationName(URI cd) {

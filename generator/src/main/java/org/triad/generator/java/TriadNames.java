@@ -299,6 +299,70 @@ public final class TriadNames {
 		return "arg" + i;
 	}
 
+	// ---- locals and helpers inside generated methods (fixed: model names never reach them) ----
+
+	public String stateBuilderVariable() {
+		return "builder";
+	}
+
+	public String objectsVariable() {
+		return "objects";
+	}
+
+	public String bindingVariable() {
+		return "binding";
+	}
+
+	public String transitionsField() {
+		return "transitions";
+	}
+
+	public String actionParameter() {
+		return "action";
+	}
+
+	public String nowParameter() {
+		return "now";
+	}
+
+	public String conjunctVariable() {
+		return "part";
+	}
+
+	public String actionSchemaVariable() {
+		return "schema";
+	}
+
+	public String schemaBuilderVariable() {
+		return "b";
+	}
+
+	public String schemaBuildMethod() {
+		return "build";
+	}
+
+	/** The state provider's helper selecting the objects of a class. */
+	public String ofTypeMethod() {
+		return "ofType";
+	}
+
+	/** The action executor's helpers converting an argument to a parameter's Java type. */
+	public String argumentMethod() {
+		return "arg";
+	}
+
+	public String doubleArgumentMethod() {
+		return "doubleArg";
+	}
+
+	public String enumArgumentMethod() {
+		return "enumArg";
+	}
+
+	public String describeValueMethod() {
+		return "describe";
+	}
+
 	// ---- rules -------------------------------------------------------------------------------
 
 	public static boolean isBoolean(TypeRef ref) {

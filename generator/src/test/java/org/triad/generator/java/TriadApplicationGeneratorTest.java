@@ -1,8 +1,11 @@
 package org.triad.generator.java;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.TreeMap;
@@ -13,6 +16,7 @@ import org.eclipse.xtext.generator.IFileSystemAccess;
 import org.eclipse.xtext.generator.IGenerator2;
 import org.eclipse.xtext.generator.InMemoryFileSystemAccess;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.ClassDiagram;
 
@@ -45,6 +49,23 @@ class TriadApplicationGeneratorTest {
 			}
 		}
 		assertEquals(Map.of(), fsa.getAllFiles());
+	}
+
+	@Test
+	void anApplicationWithTwoRobotsIsRefusedNamingThem(@TempDir Path dir) throws IOException {
+		Path models = Path.of("../models/logistics/src/main/models");
+		try (var files = Files.list(models)) {
+			for (Path f : files.toList()) {
+				Files.copy(f, dir.resolve(f.getFileName()));
+			}
+		}
+		Files.writeString(dir.resolve("Spare.actor"), "domain LogisticsDomain;\nrobot Spare {\n  property WayPoint loc();\n}\n");
+		LoadedApplication loaded = TriadJavaGenerator.load(dir);
+		Resource cd = loaded.application().getDomain().eResource();
+		IllegalStateException e = assertThrows(IllegalStateException.class,
+				() -> new TriadApplicationGenerator().doGenerate(cd, new InMemoryFileSystemAccess(), new GeneratorContext()));
+		assertTrue(e.getMessage().contains("needs exactly one robot to generate Java, found LogisticsRobot (LogisticsRobot.actor), Spare (Spare.actor)"),
+				e.getMessage());
 	}
 
 	@Test

@@ -67,6 +67,7 @@ class WorkshopGeneratorTest {
 		assertEquals(green, bolt.getMethod("getColor").invoke(b));
 		assertEquals(0.25, bolt.getMethod("getMass").invoke(b));
 		assertEquals(true, bolt.getMethod("isFragile").invoke(b));
+		assertEquals(List.class, workshop.load("IWorld").getMethod("allLists").getReturnType(), "the world has a property lists");
 		assertEquals("IsAt", ((DomainObject) workshop.load("domain.IsAt").getConstructor(String.class).newInstance("m")).typeName());
 	}
 
@@ -77,6 +78,14 @@ class WorkshopGeneratorTest {
 		StateSource provider = (StateSource) workshop.load("WorkshopStateProvider").getConstructors()[0].newInstance(actors.robot, actors.world);
 		assertEquals(bench, provider.currentState());
 		assertTrue(workshop.source("WorkshopStateProvider").contains("// Arm.counted is not observed: its n cannot be enumerated."));
+	}
+
+	@Test
+	void situationsStoreIntLiteralsOfDoublesAsDoubles() {
+		State bench = situation(workshop, "Bench");
+		assertEquals(Optional.of(2.0), bench.valueOf(new org.triad.runtime.app.Atom("Arm", "reach", List.of(new EnumValue("Color", "GREEN")))));
+		assertEquals(1.0, ((org.triad.runtime.app.GenericObject) bench.object("b1").orElseThrow()).attributes().get("mass"));
+		assertEquals(4, ((org.triad.runtime.app.GenericObject) bench.object("b1").orElseThrow()).attributes().get("size"));
 	}
 
 	@Test
