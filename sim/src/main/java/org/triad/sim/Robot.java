@@ -277,7 +277,7 @@ public final class Robot extends Agent {
     public ActionResult closeDoor(String door) {
         Door d = sim.door(door);
         return run(new HandlingActivity(this, "closeDoor(" + door + ")", () -> doorReach(d), () -> {
-            d.requestClose();
+            sim.closeDoor(door);
             return "closing '" + door + "'";
         }));
     }
