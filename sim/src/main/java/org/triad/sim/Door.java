@@ -58,19 +58,20 @@ public final class Door {
         this.locked = locked;
     }
 
-    /** Closes a pending door once no agent overlaps the doorway. */
-    void update(Iterable<? extends Agent> agents, double wallThickness) {
+    /** Closes a pending door once no agent overlaps the doorway; returns whether it closed now. */
+    boolean update(Iterable<? extends Agent> agents, double wallThickness) {
         if (!closeRequested) {
-            return;
+            return false;
         }
         for (Agent a : agents) {
             if (a.body != null && Segments.pointDistance(a.position(), doorway.end1(), doorway.end2())
                     < a.radius + wallThickness / 2 + 0.02) {
-                return;
+                return false;
             }
         }
         closeRequested = false;
         open = false;
         body.setEnabled(true);
+        return true;
     }
 }

@@ -105,6 +105,6 @@ final class MoveActivity extends Activity {
         double gap = Segments.pointDistance(p, d.doorway().end1(), d.doorway().end2()) - robot.radius - 0.35;
         Vec2 desired = follower.desiredVelocity(p, robot.maxSpeed, robot.maxAcceleration);
         double v = Math.min(desired.length(), Math.sqrt(2 * 0.9 * robot.maxAcceleration * Math.max(0, gap)));
-        robot.drive(desired.normalized().times(v), dt);
+        robot.drive(robot.avoid(desired.normalized().times(v), guided), dt);
     }
 }

@@ -148,6 +148,7 @@ public final class Robot extends Agent {
      * Leads a person to the waypoint: the person walks behind the robot ({@value #GUIDE_DISTANCE} m); the
      * robot waits when the person falls more than {@value #GUIDE_WAIT_DISTANCE} m behind, and succeeds when
      * it has arrived with the person within {@value #GUIDE_ARRIVAL_RADIUS} m. The person stands still afterwards.
+     * The person should start near the robot: they walk straight to the robot's trail.
      *
      * @throws IllegalArgumentException for an unknown person or waypoint
      */
@@ -277,7 +278,7 @@ public final class Robot extends Agent {
     public ActionResult closeDoor(String door) {
         Door d = sim.door(door);
         return run(new HandlingActivity(this, "closeDoor(" + door + ")", () -> doorReach(d), () -> {
-            d.requestClose();
+            sim.closeDoor(door);
             return "closing '" + door + "'";
         }));
     }

@@ -341,10 +341,14 @@ public final class Simulation {
     /** Requests the door to close; it closes as soon as nobody stands in the doorway. */
     public void closeDoor(String name) {
         Door d = door(name);
-        if (d.isOpen()) {
-            record(new TraceEvent(time(), "world", "door " + name + " closed", d.doorway().center(), true, ""));
-        }
         d.requestClose();
+        updateDoor(d);
+    }
+
+    private void updateDoor(Door d) {
+        if (d.update(agents, plan.wallThickness())) {
+            record(new TraceEvent(time(), "world", "door " + d.name() + " closed", d.doorway().center(), true, ""));
+        }
     }
 
     public void lockDoor(String name, boolean locked) {
@@ -430,7 +434,7 @@ public final class Simulation {
                 events.poll().action().run();
             }
             for (Door d : doors.values()) {
-                d.update(agents, plan.wallThickness());
+                updateDoor(d);
             }
             for (Agent a : agents) {
                 a.control(dt);

@@ -91,8 +91,11 @@ class PicturesTest {
         assertFalse(html.contains("/*DATA*/"));
         assertFalse(html.contains("src=\"http") || html.contains("href=\"http"), "no external resources");
         assertTrue(html.contains("\"room1-room2\"") && html.contains("pick(item1)"), "plan and events inlined");
-        long frames = html.chars().filter(c -> c == '[').count();
-        assertTrue(frames > sim.time() / 0.1, "about one frame per 0.1 s");
+        long frames = java.util.regex.Pattern.compile("\\[\\d+\\.\\d{3},\\[").matcher(html).results().count();
+        int stride = (int) Math.round(0.1 / sim.stepSeconds());
+        assertEquals((sim.trace().frames().size() + stride - 1) / stride, frames, "one frame per 0.1 s");
+        assertEquals(html.chars().filter(c -> c == '[').count(), html.chars().filter(c -> c == ']').count(),
+                "balanced data");
     }
 
     @Test

@@ -26,6 +26,21 @@ class ScriptedEventsTest {
     }
 
     @Test
+    void doorClosesOnlyOnceNobodyStandsInTheDoorway() {
+        Simulation sim = Scenes.sim(1);
+        Person p = sim.addPerson("p", "room1Door", PersonSpec.defaults());
+        sim.at(3).run("walk away", s -> p.walkTo("room1"));
+        sim.closeDoor("room1Door");
+        Door door = sim.door("room1Door");
+        assertTrue(door.isOpen() && door.isClosing());
+        assertTrue(sim.runUntil(() -> !door.isOpen(), 10));
+        assertTrue(sim.time() > 3, "closed after the person left, at " + sim.time());
+        TraceEvent closed = sim.trace().events().stream().filter(e -> e.action().equals("door room1Door closed"))
+                .findFirst().orElseThrow();
+        assertEquals(sim.time(), closed.time(), sim.stepSeconds() + 1e-9, "recorded in the step the door closed");
+    }
+
+    @Test
     void eventsRunInTimeOrderThenSchedulingOrder() {
         Simulation sim = Scenes.sim(1);
         List<String> seen = new ArrayList<>();
