@@ -38,9 +38,10 @@ import org.triad.dsl.arc.generator.ArcGenerator;
 import org.triad.dsl.arc.generator.ArcNames;
 
 /**
- * Java generated from src/main/arc replaces the hand-written stand-ins (the *TOP classes, RefArc,
- * OpenRefArc): it compiles together with the hand-written behavior classes, without the stand-ins,
- * and the generated compositions build the same parts and connections as their models say.
+ * The architecture generator's output for src/main/arc, freshly generated here (independently of
+ * the build's copy in target/generated-sources), compiles with the hand-written behavior classes
+ * against the runtime alone, and the generated compositions build the parts and connections their
+ * models declare.
  */
 class GeneratedArchitectureTest {
     private static final Path MODELS = Path.of("src/main/arc");
@@ -112,7 +113,7 @@ class GeneratedArchitectureTest {
         }
     }
 
-    /** The test's classpath without this module's own classes, so only the generated classes stand in for the stand-ins. */
+    /** The test's classpath without this module's own classes (nor the build's generated copy), so only this test's output is used. */
     private static List<String> classpathWithoutRefArc() {
         Path own = Path.of("target").toAbsolutePath().normalize();
         return Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))

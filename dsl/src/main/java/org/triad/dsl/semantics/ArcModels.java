@@ -5,6 +5,9 @@ import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.ILeafNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.triad.dsl.arc.ArcImport;
 import org.triad.dsl.arc.ArcModel;
 import org.triad.dsl.arc.ArcPort;
@@ -61,6 +64,35 @@ public final class ArcModels {
 	public static String qualifiedName(ComponentType c) {
 		String pkg = packageName(c);
 		return pkg.isEmpty() ? c.getName() : pkg + "." + c.getName();
+	}
+
+	/**
+	 * The text of the block comments right before an element (its documentation), without comment
+	 * markers and leading asterisks; "" if there is none.
+	 */
+	public static String documentation(EObject e) {
+		ICompositeNode node = NodeModelUtils.getNode(e);
+		if (node == null) {
+			return "";
+		}
+		StringBuilder text = new StringBuilder();
+		for (ILeafNode leaf : node.getLeafNodes()) {
+			if (!leaf.isHidden()) {
+				break;
+			}
+			String t = leaf.getText();
+			if (t.startsWith("/*")) {
+				String body = t.substring(t.startsWith("/**") ? 3 : 2, t.length() - 2);
+				for (String line : body.split("\\R")) {
+					String l = line.strip();
+					l = l.startsWith("*") ? l.substring(1).strip() : l;
+					if (!l.isEmpty() || text.length() > 0) {
+						text.append(l).append('\n');
+					}
+				}
+			}
+		}
+		return text.toString().strip();
 	}
 
 	public static List<String> imports(EObject e) {

@@ -41,7 +41,7 @@ public class AtomicComponentTemplate {
 		}
 		b.append("\n/**\n * Interface of component {@code ").append(ArcModels.qualifiedName(c)).append("}, generated from its .arc model; do not edit.\n")
 				.append(" * Its behavior is the hand-written subclass {@code ").append(names.componentClass(c))
-				.append("}: one handler per incoming port (TOP pattern).\n */\n");
+				.append("}: one handler per incoming port (TOP pattern).\n").append(JavaDoc.paragraph(ArcModels.documentation(c))).append(" */\n");
 		if (ports.stream().anyMatch(names::isGeneric)) {
 			b.append("@SuppressWarnings(\"unchecked\")\n");
 		}

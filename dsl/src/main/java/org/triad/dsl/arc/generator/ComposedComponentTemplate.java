@@ -45,7 +45,8 @@ public class ComposedComponentTemplate {
 			b.append("import ").append(i).append(";\n");
 		}
 		b.append("\n/**\n * Component {@code ").append(ArcModels.qualifiedName(c))
-				.append("}, generated from its .arc model; do not edit: ports, subcomponents and connectors.\n */\n");
+				.append("}, generated from its .arc model; do not edit: ports, subcomponents and connectors.\n")
+				.append(JavaDoc.paragraph(ArcModels.documentation(c))).append(" */\n");
 		if (ports.stream().anyMatch(names::isGeneric)) {
 			b.append("@SuppressWarnings(\"unchecked\")\n");
 		}
