@@ -36,6 +36,11 @@ public final class ArcIssueCodes {
 	 * components with the same qualified name.
 	 */
 	public static final String DUPLICATE_NAME = "arc.duplicate-name";
+	/**
+	 * Warning: an incoming port of a subcomponent or an outgoing port of a composed component that
+	 * no connector sends to; it never gets a message.
+	 */
+	public static final String UNCONNECTED_PORT = "arc.unconnected-port";
 	/** A subcomponent gets a different number of arguments than its type has configuration parameters. */
 	public static final String ARGUMENT_COUNT = "arc.argument-count";
 }

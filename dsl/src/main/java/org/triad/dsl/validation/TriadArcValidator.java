@@ -124,6 +124,28 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 				}
 			}
 		}
+		warnUnconnected(c, senders.keySet());
+	}
+
+	private void warnUnconnected(ComponentType c, Set<String> connected) {
+		for (ArcPort p : ArcModels.ports(c, Direction.OUT)) {
+			if (p.getName() != null && !connected.contains(p.getName())) {
+				warning("outgoing port '" + p.getName() + "' of '" + c.getName() + "' has no sender: no connector ends at it", p,
+						A.getArcNamedElement_Name(), ArcIssueCodes.UNCONNECTED_PORT);
+			}
+		}
+		for (Subcomponent sub : c.getSubcomponents()) {
+			ComponentType type = sub.getType();
+			if (sub.getName() == null || type == null || type.eIsProxy()) {
+				continue;
+			}
+			for (ArcPort p : ArcModels.ports(type, Direction.IN)) {
+				if (p.getName() != null && !connected.contains(sub.getName() + "." + p.getName())) {
+					warning("incoming port '" + p.getName() + "' of subcomponent '" + sub.getName() + "' has no sender: no connector ends at it",
+							sub, A.getArcNamedElement_Name(), ArcIssueCodes.UNCONNECTED_PORT);
+				}
+			}
+		}
 	}
 
 	@Check

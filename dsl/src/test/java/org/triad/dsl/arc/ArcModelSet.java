@@ -21,7 +21,7 @@ import org.triad.dsl.TriadLanguages;
 /** Test fixture: .arc files given as text, loaded into one resource set so they link to each other. */
 final class ArcModelSet {
 	/** One diagnostic as a test compares it: file, line, code. */
-	record Found(String file, int line, String code, String message) {
+	record Found(String file, int line, String code, String message, boolean error) {
 		@Override
 		public String toString() {
 			return file + ":" + line + ": " + code + ": " + message;
@@ -71,7 +71,8 @@ final class ArcModelSet {
 		for (Resource r : resources) {
 			XtextResource x = (XtextResource) r;
 			for (Issue i : x.getResourceServiceProvider().getResourceValidator().validate(r, CheckMode.ALL, CancelIndicator.NullImpl)) {
-				found.add(new Found(r.getURI().lastSegment(), i.getLineNumber() == null ? 0 : i.getLineNumber(), i.getCode(), i.getMessage()));
+				found.add(new Found(r.getURI().lastSegment(), i.getLineNumber() == null ? 0 : i.getLineNumber(), i.getCode(), i.getMessage(),
+						i.getSeverity() == org.eclipse.xtext.diagnostics.Severity.ERROR));
 			}
 		}
 		return found;

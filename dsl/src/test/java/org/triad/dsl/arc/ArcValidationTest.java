@@ -69,7 +69,13 @@ class ArcValidationTest {
 		files.put("Sink.arc", SINK);
 		files.put("System.arc", SYSTEM);
 		files.putAll(replaced);
-		return ArcModelSet.of(files).issues().stream().map(f -> f.file() + ":" + f.line() + " " + f.code()).toList();
+		return ArcModelSet.of(files).issues().stream().filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList();
+	}
+
+	private static List<String> warnings(String systemText) {
+		Map<String, String> files = new LinkedHashMap<>(Map.of("Sensor.arc", SENSOR, "Filter.arc", FILTER, "Sink.arc", SINK));
+		files.put("System.arc", systemText);
+		return ArcModelSet.of(files).issues().stream().filter(f -> !f.error()).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList();
 	}
 
 	private static String system(String line10) {
@@ -180,7 +186,7 @@ class ArcValidationTest {
 		String a = "package demo;\ncomponent A {\n  B b;\n}\n";
 		String b = "package demo;\ncomponent B {\n  port in int x;\n  A a;\n}\n";
 		assertEquals(List.of("A.arc:3 " + ArcIssueCodes.INSTANTIATION_CYCLE, "B.arc:4 " + ArcIssueCodes.INSTANTIATION_CYCLE),
-				ArcModelSet.of(new LinkedHashMap<>(Map.of("A.arc", a, "B.arc", b))).issues().stream()
+				ArcModelSet.of(new LinkedHashMap<>(Map.of("A.arc", a, "B.arc", b))).issues().stream().filter(ArcModelSet.Found::error)
 						.map(f -> f.file() + ":" + f.line() + " " + f.code()).sorted().toList());
 		assertEquals(List.of("Self.arc:3 " + ArcIssueCodes.INSTANTIATION_CYCLE),
 				found(Map.of("Self.arc", "package demo;\ncomponent Self {\n  Self inner;\n}\n")));
@@ -211,6 +217,14 @@ class ArcValidationTest {
 	void argumentsMatchConfigurationParameters() {
 		assertEquals(List.of("System.arc:7 " + ArcIssueCodes.ARGUMENT_COUNT), found(SYSTEM.replace("Filter filter(2.0);", "Filter filter;")));
 		assertEquals(List.of("System.arc:6 " + ArcIssueCodes.ARGUMENT_COUNT), found(SYSTEM.replace("Sensor sensor;", "Sensor sensor(1, f(2, 3));")));
+	}
+
+	@Test
+	void unconnectedPortsAreWarned() {
+		assertEquals(List.of("System.arc:6 " + ArcIssueCodes.UNCONNECTED_PORT), warnings(system("")));
+		assertEquals(List.of("System.arc:5 " + ArcIssueCodes.UNCONNECTED_PORT),
+				warnings(SYSTEM.replace("filter.smooth -> out, sink.in;", "filter.smooth -> sink.in;")));
+		assertEquals(List.of(), found(system("")), "a warning, not an error");
 	}
 
 	@Test
