@@ -1,6 +1,7 @@
 package org.triad.dsl.validation;
 
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -13,6 +14,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.naming.IQualifiedNameProvider;
 import org.eclipse.xtext.naming.QualifiedName;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.resource.IResourceDescriptions;
 import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
@@ -46,7 +48,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 	@Check
 	public void checkUniqueMemberNames(ComponentType c) {
 		Map<String, ArcNamedElement> seen = new HashMap<>();
-		List<ArcNamedElement> members = new java.util.ArrayList<>();
+		List<ArcNamedElement> members = new ArrayList<>();
 		members.addAll(c.getParameters());
 		members.addAll(ArcModels.ports(c));
 		members.addAll(c.getSubcomponents());
@@ -119,7 +121,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 				PortRef first = senders.putIfAbsent(target.key(), targetRef);
 				if (first != null) {
 					error(target.describe() + " has two senders: it is already the target of a connector on line "
-							+ org.eclipse.xtext.nodemodel.util.NodeModelUtils.getNode(first).getStartLine(), targetRef, null,
+							+ NodeModelUtils.getNode(first).getStartLine(), targetRef, null,
 							ArcIssueCodes.TWO_SENDERS);
 				}
 			}
@@ -194,8 +196,9 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 	@Check
 	public void checkOneAutomaton(ComponentType c) {
-		for (Automaton extra : c.getAutomata().subList(Math.min(1, c.getAutomata().size()), c.getAutomata().size())) {
-			error("component '" + c.getName() + "' has more than one automaton", extra, null, ArcIssueCodes.MULTIPLE_AUTOMATA);
+		for (int i = 1; i < c.getAutomata().size(); i++) {
+			error("component '" + c.getName() + "' has more than one automaton", c.getAutomata().get(i), null,
+					ArcIssueCodes.MULTIPLE_AUTOMATA);
 		}
 	}
 

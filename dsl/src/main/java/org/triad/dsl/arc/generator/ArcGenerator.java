@@ -21,6 +21,11 @@ public class ArcGenerator extends AbstractGenerator {
 	private final AtomicComponentTemplate atomic;
 	private final ComposedComponentTemplate composed;
 
+	/**
+	 * For Xtext's generator infrastructure (IGenerator2 binding, e.g. xtext-maven-plugin), which
+	 * cannot pass arguments: the base Java package comes from the system property
+	 * {@code triad.arc.basePackage} (default none).
+	 */
 	public ArcGenerator() {
 		this(new ArcNames(System.getProperty("triad.arc.basePackage", "")));
 	}
