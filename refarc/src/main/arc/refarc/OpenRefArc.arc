@@ -4,11 +4,13 @@ import org.triad.runtime.app.TaskInstance;
 import org.triad.refarc.*;
 
 /*
- * RefArc with the Planner-to-Controller connection exposed as two ports, so an application can put
- * a component (e.g. a PlanVerifier) in between purely by connecting ports:
+ * RefArc with the Planner-to-Controller connection exposed as two ports: the Planner's results
+ * leave on proposedPlan and the Controller takes plans from plan. An application puts a component
+ * (e.g. a PlanVerifier) in between purely by connecting ports:
  *   core.proposedPlan -> verifier.proposed;
  *   verifier.verified -> core.plan;
- * Java form: org.triad.refarc.OpenRefArc.
+ * Whatever is inserted must answer every PlanResult with one PlanResult of the same request id,
+ * otherwise the Controller waits for it. Java form (generated): org.triad.refarc.OpenRefArc.
  */
 component OpenRefArc(StateSource stateSource, GoalPlanner goalPlanner, ActionRunner actionRunner) {
   port in TaskInstance task;

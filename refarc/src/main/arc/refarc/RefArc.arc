@@ -4,12 +4,14 @@ import org.triad.runtime.app.TaskInstance;
 import org.triad.refarc.*;
 
 /*
- * The reference architecture (Fig. 3 of the paper). The Java class org.triad.refarc.RefArc is the
- * hand-written form of what the architecture generator will emit from this model; keep both in step
- * until the generator exists.
+ * The reference architecture (Fig. 3 of the paper): tasks in, status out. The Java class
+ * org.triad.refarc.RefArc is generated from this model.
  *
  * `faults` is the runtime-fed in port every composed component has: faults of subcomponents go to
  * the Controller, which reports them on Status and fails the step they belong to.
+ *
+ * To put a component between Planner and Controller (e.g. a PlanVerifier), use OpenRefArc, which
+ * has the same parts but exposes that connection as two ports.
  */
 component RefArc(StateSource stateSource, GoalPlanner goalPlanner, ActionRunner actionRunner) {
   port in TaskInstance task;

@@ -7,11 +7,12 @@ import com.google.inject.Injector;
 
 /**
  * The Triad modeling languages, set up together because their models link to each other: an
- * actor refers to the class diagram's types, a task to goals, a goal to actors' properties.
+ * actor refers to the class diagram's types, a task to goals, a goal to actors' properties; the
+ * architecture (.arc) files of an application are checked alongside.
  */
 public final class TriadLanguages {
 	/** The file extensions of model files, in the order an application is usually read. */
-	public static final List<String> EXTENSIONS = List.of("cd", "actor", "goal", "task", "state");
+	public static final List<String> EXTENSIONS = List.of("cd", "actor", "goal", "task", "state", "arc");
 
 	private static Map<String, Injector> injectors;
 
@@ -26,7 +27,8 @@ public final class TriadLanguages {
 					"actor", new TriadActorStandaloneSetup().createInjectorAndDoEMFRegistration(),
 					"goal", new TriadGoalStandaloneSetup().createInjectorAndDoEMFRegistration(),
 					"task", new TriadTaskStandaloneSetup().createInjectorAndDoEMFRegistration(),
-					"state", new TriadStateStandaloneSetup().createInjectorAndDoEMFRegistration());
+					"state", new TriadStateStandaloneSetup().createInjectorAndDoEMFRegistration(),
+					"arc", new TriadArcStandaloneSetup().createInjectorAndDoEMFRegistration());
 		}
 		return injectors;
 	}

@@ -14,8 +14,9 @@
  * {@link org.triad.refarc.OpenRefArc}, the variant that exposes that connection as ports.
  * {@link org.triad.refarc.RefArcRunner} runs one task synchronously for tests and the CLI.
  *
- * <p>The {@code *TOP} classes are the parts the architecture generator will emit from the models in
- * {@code src/main/arc} (MontiArc's TOP pattern); until it exists they are written by hand and
- * {@code ArcModelConsistencyTest} keeps them in step with the models.
+ * <p>The architecture generator emits, from the models in {@code src/main/arc}, the {@code *TOP}
+ * classes (ports and one handler per in port, MontiArc's TOP pattern) that the hand-written
+ * components extend, and the compositions {@code RefArc} and {@code OpenRefArc}; the build puts
+ * them in {@code target/generated-sources/arc}.
  */
 package org.triad.refarc;

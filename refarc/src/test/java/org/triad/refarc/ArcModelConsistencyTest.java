@@ -21,9 +21,9 @@ import org.triad.runtime.component.OutPort;
 import org.triad.runtime.component.Port;
 
 /**
- * Until the architecture generator exists, the Java compositions are written by hand from the
- * .arc models in src/main/arc; this test keeps the two in step: same ports, subcomponents and
- * connectors.
+ * The Java components (generated from the .arc models in src/main/arc, extended by hand-written
+ * behavior) have the ports, subcomponents and connectors their models declare, read independently
+ * of the generator from the model text.
  */
 class ArcModelConsistencyTest {
     private static final Path MODELS = Path.of("src/main/arc/refarc");

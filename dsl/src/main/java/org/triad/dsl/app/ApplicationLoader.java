@@ -23,6 +23,7 @@ import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
 import org.triad.dsl.TriadLanguages;
+import org.triad.dsl.arc.ArcModel;
 import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.ActorKind;
 import org.triad.dsl.triad.ActorModel;
@@ -150,10 +151,12 @@ public final class ApplicationLoader {
 		if (!worlds.isEmpty()) {
 			app.setWorld(worlds.get(0));
 		}
-		if (resources.isEmpty()) {
-			return app;
+		if (resources.stream().allMatch(ApplicationLoader::isArchitecture)) {
+			return app; // no application models (at most .arc files): nothing to require of an application
 		}
-		EObject anchor = diagrams.isEmpty() ? resources.get(0).getContents().stream().findFirst().orElse(null) : diagrams.get(0);
+		EObject anchor = diagrams.isEmpty()
+				? resources.stream().filter(r -> !isArchitecture(r)).flatMap(r -> r.getContents().stream()).findFirst().orElse(null)
+				: diagrams.get(0);
 		Path anchorFile = anchor == null ? dir : Path.of(anchor.eResource().getURI().toFileString());
 		int line = anchor == null ? 1 : lineOf(anchor);
 		if (diagrams.isEmpty()) {
@@ -172,6 +175,10 @@ public final class ApplicationLoader {
 			diagnostics.add(structure(anchorFile, line, "the application has no world (an .actor file with 'world Name { ... }')"));
 		}
 		return app;
+	}
+
+	private static boolean isArchitecture(Resource r) {
+		return r.getContents().stream().anyMatch(ArcModel.class::isInstance);
 	}
 
 	private static ModelDiagnostic structure(Path file, int line, String message) {

@@ -1,0 +1,53 @@
+package org.triad.dsl.linking;
+
+import org.eclipse.emf.ecore.EReference;
+import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.diagnostics.DiagnosticMessage;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
+import org.triad.dsl.arc.ArcPackage;
+import org.triad.dsl.arc.ComponentType;
+import org.triad.dsl.arc.PortRef;
+import org.triad.dsl.arc.Subcomponent;
+import org.triad.dsl.validation.ArcIssueCodes;
+
+/** Unresolved names in .arc models get a stable code per kind (component, port, subcomponent, state). */
+public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
+	private static final ArcPackage A = ArcPackage.eINSTANCE;
+
+	@Override
+	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
+		EReference ref = context.getReference();
+		String name = context.getLinkText();
+		if (ref == A.getSubcomponent_Type()) {
+			return error(ArcIssueCodes.UNKNOWN_COMPONENT, "unknown component type '" + name
+					+ "' (not in this package, not imported, no component of that qualified name)");
+		}
+		if (ref == A.getPortRef_Port() && context.getContext() instanceof PortRef portRef) {
+			Subcomponent sub = portRef.getSubcomponent();
+			if (sub != null) {
+				if (sub.eIsProxy() || sub.getType() == null || sub.getType().eIsProxy()) {
+					return null; // the unknown subcomponent or type is reported; its ports cannot be known
+				}
+				return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of subcomponent '" + sub.getName()
+						+ "' (component '" + sub.getType().getName() + "')");
+			}
+			ComponentType owner = EcoreUtil2.getContainerOfType(portRef, ComponentType.class);
+			return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of component '"
+					+ (owner == null ? "?" : owner.getName()) + "'");
+		}
+		if (ref == A.getPortRef_Subcomponent()) {
+			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);
+			return error(ArcIssueCodes.UNKNOWN_SUBCOMPONENT, "unknown subcomponent '" + name + "' of component '"
+					+ (owner == null ? "?" : owner.getName()) + "'");
+		}
+		if (ref == A.getTransition_Source() || ref == A.getTransition_Target()) {
+			return error(ArcIssueCodes.UNKNOWN_STATE, "unknown state '" + name + "' (not declared in this automaton)");
+		}
+		return super.getUnresolvedProxyMessage(context);
+	}
+
+	private static DiagnosticMessage error(String code, String message) {
+		return new DiagnosticMessage(message, Severity.ERROR, code);
+	}
+}
