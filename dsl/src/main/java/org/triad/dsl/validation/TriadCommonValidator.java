@@ -58,7 +58,7 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 			}
 			case EQ, NE -> {
 				if (!TriadTypeSystem.isComparable(left, right)) {
-					error("cannot compare " + left.display() + " with " + right.display() + " using '" + e.getOperator().getLiteral() + "'",
+					error("cannot compare " + left.displayAgainst(right) + " with " + right.displayAgainst(left) + " using '" + e.getOperator().getLiteral() + "'",
 							e, P.getBinaryExpression_Operator(), CommonIssueCodes.INCOMPATIBLE_OPERANDS);
 				}
 			}
@@ -99,8 +99,8 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 			TriadType expected = TriadTypeSystem.typeOf(params.get(i).getType());
 			TriadType actual = TriadTypeSystem.typeOf(call.getArguments().get(i));
 			if (!TriadTypeSystem.isAssignable(expected, actual)) {
-				error("argument " + (i + 1) + " of '" + p.getName() + "' must be " + expected.display() + ", but is "
-						+ actual.display(), call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.ARGUMENT_TYPE);
+				error("argument " + (i + 1) + " of '" + p.getName() + "' must be " + expected.displayAgainst(actual) + ", but is "
+						+ actual.displayAgainst(expected), call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.ARGUMENT_TYPE);
 			}
 		}
 	}

@@ -40,8 +40,8 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 			TriadType expected = TriadTypeSystem.typeOf(params.get(i).getType());
 			TriadType actual = TriadTypeSystem.typeOf(ref.getArguments().get(i));
 			if (!TriadTypeSystem.isAssignable(expected, actual)) {
-				error("argument " + (i + 1) + " of goal '" + goal.getName() + "' must be " + expected.display() + ", but is "
-						+ actual.display(), ref, P.getGoalReference_Arguments(), i, TaskIssueCodes.ARGUMENT_TYPE);
+				error("argument " + (i + 1) + " of goal '" + goal.getName() + "' must be " + expected.displayAgainst(actual) + ", but is "
+						+ actual.displayAgainst(expected), ref, P.getGoalReference_Arguments(), i, TaskIssueCodes.ARGUMENT_TYPE);
 			}
 		}
 	}
