@@ -59,7 +59,8 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 
 	@Override
 	protected void _createProposals(Keyword keyword, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {
-		if (qualifierBeforeDot(context) == null) {
+		// nothing to add after 'X.', nor a keyword that is already typed in full
+		if (qualifierBeforeDot(context) == null && !keyword.getValue().equals(context.getPrefix())) {
 			super._createProposals(keyword, context, acceptor);
 		}
 	}
