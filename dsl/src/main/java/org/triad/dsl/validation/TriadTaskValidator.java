@@ -52,6 +52,9 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 			warning("task '" + task.getName() + "' has no goals", task, P.getNamedElement_Name(), TaskIssueCodes.EMPTY);
 		}
 		for (Parameter p : task.getParameters()) {
+			if (isDuplicate(p)) {
+				continue; // reported as a duplicate; references resolve to the first one
+			}
 			boolean used = EcoreUtil2.getAllContentsOfType(task, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
 			if (!used) {
 				warning("parameter '" + p.getName() + "' of task '" + task.getName() + "' is not used", p, P.getNamedElement_Name(),
