@@ -40,8 +40,8 @@ import org.triad.dsl.app.ModelDiagnostic;
  * error has a position and a code, both as {@link ModelDiagnostic} and as the validator's raw
  * {@link Issue}. A failure names the seed and case, so it can be replayed.
  */
-class RobustnessTest {
-	static final long SEED = Long.getLong("triad.fuzz.seed", 20261122L);
+public class RobustnessTest {
+	public static final long SEED = Long.getLong("triad.fuzz.seed", 20261122L);
 	static final int CASES = Integer.getInteger("triad.fuzz.cases", 2000);
 	static final int BATCH = 20;
 
@@ -53,7 +53,7 @@ class RobustnessTest {
 			"\"", "//", "/*", "*/", "\n", "\t", "Hospital", "Courier", "IsAt", "\u00e9", "\u0000" };
 	private static final Pattern TOKEN = Pattern.compile("\"[^\"\\n]*\"|\\w+|//[^\\n]*|\\S");
 
-	record Case(String description, String extension, byte[] content) {
+	public record Case(String description, String extension, byte[] content) {
 	}
 
 	/** Collects what Xtext logs as an error: exceptions it caught inside checks, scoping or linking. */
@@ -102,7 +102,7 @@ class RobustnessTest {
 		assertEquals("", String.join("\n", problems.stream().limit(20).toList()), problems.size() + " problems (seed " + SEED + ")");
 	}
 
-	record Model(String name, String extension, String text) {
+	public record Model(String name, String extension, String text) {
 	}
 
 	/** The unmutated class diagrams and actors of the corpus, which every batch links against. */
@@ -112,7 +112,7 @@ class RobustnessTest {
 				.stream().toList();
 	}
 
-	static List<Model> corpus() throws IOException {
+	public static List<Model> corpus() throws IOException {
 		List<Model> models = new ArrayList<>();
 		for (Path dir : List.of(Path.of("..", "models"), Path.of("src", "test", "resources", "rules", "_base"))) {
 			try (Stream<Path> files = Files.walk(dir)) {
@@ -128,7 +128,7 @@ class RobustnessTest {
 		return models;
 	}
 
-	static Case generate(int index, Random random, List<Model> corpus) {
+	public static Case generate(int index, Random random, List<Model> corpus) {
 		String ext = EXTENSIONS.get(random.nextInt(EXTENSIONS.size()));
 		int kind = random.nextInt(10);
 		if (kind == 0) {

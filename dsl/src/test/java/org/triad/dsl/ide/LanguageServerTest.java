@@ -25,6 +25,8 @@ import org.eclipse.lsp4j.DefinitionParams;
 import org.eclipse.lsp4j.Diagnostic;
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.eclipse.lsp4j.DidOpenTextDocumentParams;
+import org.eclipse.lsp4j.DocumentFormattingParams;
+import org.eclipse.lsp4j.FormattingOptions;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
 import org.eclipse.lsp4j.InitializedParams;
@@ -38,6 +40,7 @@ import org.eclipse.lsp4j.Range;
 import org.eclipse.lsp4j.ShowMessageRequestParams;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.TextDocumentItem;
+import org.eclipse.lsp4j.TextEdit;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.lsp4j.launch.LSPLauncher;
@@ -54,8 +57,8 @@ import com.google.inject.Guice;
 
 /**
  * The language server (the one {@code triad lsp} runs), driven over the protocol through piped
- * streams like an editor: diagnostics with code and range, completion, and go-to-definition
- * across files.
+ * streams like an editor: diagnostics with code and range, completion, go-to-definition across
+ * files, and formatting.
  */
 class LanguageServerTest {
 	private static final long TIMEOUT_S = 60;
@@ -219,5 +222,43 @@ class LanguageServerTest {
 		assertEquals(uri(workspace.resolve("Bot.actor")), target.getUri());
 		// Bot.actor line 4 is "  property Place loc();": the name 'loc'
 		assertEquals(new Range(new Position(3, 17), new Position(3, 20)), target.getRange());
+	}
+
+	@Test
+	void formatsADocument() throws Exception {
+		String text = "domain Shop;\ngoal  Far(Place p){Bot.loc()!=p&&!Bot.handEmpty()}\n";
+		String uri = open("Far.goal", text);
+		List<? extends TextEdit> edits = server.getTextDocumentService()
+				.formatting(new DocumentFormattingParams(new TextDocumentIdentifier(uri), new FormattingOptions(2, true)))
+				.get(TIMEOUT_S, TimeUnit.SECONDS);
+		assertEquals("domain Shop;\n\ngoal Far(Place p) {\n  Bot.loc() != p && !Bot.handEmpty()\n}\n", apply(text, edits));
+	}
+
+	@Test
+	void formattingAnEmptyDocumentChangesNothing() throws Exception {
+		String uri = open("Empty.task", "");
+		List<? extends TextEdit> edits = server.getTextDocumentService()
+				.formatting(new DocumentFormattingParams(new TextDocumentIdentifier(uri), new FormattingOptions(2, true)))
+				.get(TIMEOUT_S, TimeUnit.SECONDS);
+		assertEquals(List.of(), edits);
+	}
+
+	/** Applies LSP edits (non-overlapping) to a text. */
+	private static String apply(String text, List<? extends TextEdit> edits) {
+		List<TextEdit> sorted = new java.util.ArrayList<>(edits);
+		sorted.sort((a, b) -> Integer.compare(offset(text, b.getRange().getStart()), offset(text, a.getRange().getStart())));
+		StringBuilder result = new StringBuilder(text);
+		for (TextEdit edit : sorted) {
+			result.replace(offset(text, edit.getRange().getStart()), offset(text, edit.getRange().getEnd()), edit.getNewText());
+		}
+		return result.toString();
+	}
+
+	private static int offset(String text, Position position) {
+		int offset = 0;
+		for (int line = 0; line < position.getLine(); line++) {
+			offset = text.indexOf('\n', offset) + 1;
+		}
+		return offset + position.getCharacter();
 	}
 }
