@@ -91,7 +91,13 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 	}
 
 	private <T> T resolve(ContentAssistContext context, EReference ref, String name, Class<T> type) {
-		EObject model = context.getCurrentModel() != null ? context.getCurrentModel() : context.getResource().getContents().get(0);
+		EObject model = context.getCurrentModel();
+		if (model == null && !context.getResource().getContents().isEmpty()) {
+			model = context.getResource().getContents().get(0);
+		}
+		if (model == null) {
+			return null;
+		}
 		IScope scope = getScopeProvider().getScope(model, ref);
 		IEObjectDescription description = scope.getSingleElement(QualifiedName.create(name));
 		if (description == null) {

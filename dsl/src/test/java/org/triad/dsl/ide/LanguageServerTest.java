@@ -208,6 +208,28 @@ class LanguageServerTest {
 	}
 
 	@Test
+	void completionAnswersThroughoutHalfTypedModels() throws Exception {
+		// every other position of half-typed models, where completion runs on broken text
+		for (String name : List.of("Bot.actor", "Start.state", "Go.task")) {
+			String text = Files.readString(workspace.resolve(name));
+			for (String variant : List.of(text.substring(0, text.length() / 2), text.replace(")", ""))) {
+				String uri = uri(workspace.resolve("Typing" + name));
+				server.getTextDocumentService().didOpen(
+						new DidOpenTextDocumentParams(new TextDocumentItem(uri, name.substring(name.indexOf('.') + 1), 1, variant)));
+				List<String> lines = variant.lines().toList();
+				for (int line = 0; line < lines.size(); line++) {
+					for (int character = line % 2; character <= lines.get(line).length(); character += 2) {
+						CompletionParams params = new CompletionParams(new TextDocumentIdentifier(uri), new Position(line, character));
+						// an exception in the server comes back as an error response, and get() throws it
+						server.getTextDocumentService().completion(params).get(TIMEOUT_S, TimeUnit.SECONDS);
+					}
+				}
+				server.getTextDocumentService().didClose(new org.eclipse.lsp4j.DidCloseTextDocumentParams(new TextDocumentIdentifier(uri)));
+			}
+		}
+	}
+
+	@Test
 	void goesToTheDefinitionOfAPropertyInAnotherFile() throws Exception {
 		String uri = uri(workspace.resolve("At.goal"));
 		String text = Files.readString(workspace.resolve("At.goal"));
