@@ -1,12 +1,15 @@
 package org.triad.dsl.linking;
 
 import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.diagnostics.DiagnosticMessage;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
 import org.triad.dsl.triad.Actor;
+import org.triad.dsl.triad.DomainModel;
+import org.triad.dsl.triad.EnumLiteralRef;
 import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.triad.TriadPackage;
 import org.triad.dsl.validation.CommonIssueCodes;
@@ -44,6 +47,9 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 			return error(CommonIssueCodes.UNKNOWN_DOMAIN, "unknown class diagram '" + name + "' (no 'classdiagram " + name + "' in this application)");
 		}
 		if (target == P.getDomainType() || target == P.getDomainClass()) {
+			if (isUnqualified(name) && hasUnknownDomain(context.getContext())) {
+				return null; // the unknown 'domain D;' is reported; the types it would import cannot be known
+			}
 			return error(CommonIssueCodes.UNKNOWN_TYPE, "unknown type '" + name + "'");
 		}
 		if (target == P.getActor()) {
@@ -56,12 +62,25 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown enumeration '" + name + "'");
 		}
 		if (target == P.getEnumLiteral()) {
+			if (context.getContext() instanceof EnumLiteralRef literalRef && literalRef.getEnumeration() != null
+					&& literalRef.getEnumeration().eIsProxy()) {
+				return null; // the unknown enumeration is reported; its literals cannot be known
+			}
 			return error(CommonIssueCodes.UNKNOWN_LITERAL, "unknown enumeration literal '" + name + "'");
 		}
 		if (target == P.getAttribute()) {
 			return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "unknown attribute '" + name + "'");
 		}
 		return error(CommonIssueCodes.UNKNOWN_NAME, "unknown " + target.getName() + " '" + name + "'");
+	}
+
+	private static boolean isUnqualified(String name) {
+		return name != null && !name.contains(".");
+	}
+
+	private static boolean hasUnknownDomain(EObject context) {
+		DomainModel model = EcoreUtil2.getContainerOfType(context, DomainModel.class);
+		return model != null && model.getDomain() != null && model.getDomain().eIsProxy();
 	}
 
 	private static DiagnosticMessage error(String code, String message) {

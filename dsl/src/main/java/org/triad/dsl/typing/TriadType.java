@@ -53,6 +53,18 @@ public record TriadType(Kind kind, DomainType domainType) {
 		};
 	}
 
+	/**
+	 * The name shown next to {@code other} in a message: qualified by its class diagram when both
+	 * are different types with the same simple name ("Depot.Place" and "Shop.Place").
+	 */
+	public String displayAgainst(TriadType other) {
+		if (domainType != null && other != null && !equals(other) && display().equals(other.display())
+				&& domainType.eContainer() instanceof org.triad.dsl.triad.ClassDiagram cd) {
+			return cd.getName() + "." + display();
+		}
+		return display();
+	}
+
 	@Override
 	public boolean equals(Object o) {
 		return o instanceof TriadType t && t.kind == kind && t.domainType == domainType;

@@ -88,7 +88,8 @@ public final class TriadTypeSystem {
 			return false;
 		}
 		if (target.kind() == TriadType.Kind.CLASS) {
-			return isSubclass(source.domainClass(), target.domainClass());
+			// a class whose superclass did not resolve may be anything (its unknown superclass is reported once)
+			return isSubclass(source.domainClass(), target.domainClass()) || hasUnknownAncestry(source.domainClass());
 		}
 		return target.domainType() == source.domainType();
 	}
@@ -105,6 +106,16 @@ public final class TriadTypeSystem {
 			}
 		}
 		return false;
+	}
+
+	/** Whether some superclass of {@code c} is an unresolved reference. */
+	public static boolean hasUnknownAncestry(DomainClass c) {
+		List<DomainClass> chain = superClassesAndSelf(c);
+		if (chain.isEmpty()) {
+			return c != null;
+		}
+		DomainClass top = chain.get(chain.size() - 1).getSuperType();
+		return top != null && top.eIsProxy();
 	}
 
 	/** The class and its superclasses, nearest first; stops at a cycle or an unresolved superclass. */

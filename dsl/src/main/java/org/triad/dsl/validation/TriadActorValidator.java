@@ -7,6 +7,7 @@ import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.resource.IResourceDescriptions;
@@ -18,6 +19,8 @@ import org.triad.dsl.semantics.Postconditions;
 import org.triad.dsl.triad.Action;
 import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.NamedElement;
+import org.triad.dsl.triad.Property;
+import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
 
@@ -69,13 +72,37 @@ public class TriadActorValidator extends AbstractTriadActorValidator {
 							ActorIssueCodes.EFFECT_VALUE);
 				}
 			}
-			String key = NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(effect.call())).replaceAll("\\s+", "");
+			String key = targetKey(effect.call(), action);
 			Effect previous = byTarget.put(key, effect);
 			if (previous != null) {
 				error("the postcondition of '" + action.getName() + "' sets '" + key + "' twice", effect.call().eContainer(),
 						effect.call().eContainmentFeature(), ActorIssueCodes.CONFLICTING_EFFECTS);
 			}
 		}
+	}
+
+	/**
+	 * What an effect changes: the property (whether named as {@code p()} or {@code Actor.p()}) and
+	 * its arguments as written.
+	 */
+	private static String targetKey(PropertyCall call, Action action) {
+		Property p = call.getProperty();
+		if (p == null || p.eIsProxy() || !(p.eContainer() instanceof Actor owner)) {
+			return text(call);
+		}
+		StringBuilder key = new StringBuilder();
+		if (owner != EcoreUtil2.getContainerOfType(action, Actor.class)) {
+			key.append(owner.getName()).append('.');
+		}
+		key.append(p.getName()).append('(');
+		for (int i = 0; i < call.getArguments().size(); i++) {
+			key.append(i == 0 ? "" : ", ").append(text(call.getArguments().get(i)));
+		}
+		return key.append(')').toString();
+	}
+
+	private static String text(EObject e) {
+		return NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(e)).replaceAll("\\s+", "");
 	}
 
 	private static int indexIn(EObject e) {

@@ -15,6 +15,9 @@ import org.eclipse.xtext.resource.IResourceDescriptions;
 import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.CheckType;
+import org.eclipse.xtext.EcoreUtil2;
+import org.triad.dsl.semantics.Postconditions;
+import org.triad.dsl.triad.Action;
 import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.BinaryExpression;
 import org.triad.dsl.triad.ClassDiagram;
@@ -57,8 +60,8 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 				requireBoolean(e.getRight(), right, e.getOperator().getLiteral(), P.getBinaryExpression_Right(), e);
 			}
 			case EQ, NE -> {
-				if (!TriadTypeSystem.isComparable(left, right)) {
-					error("cannot compare " + left.display() + " with " + right.display() + " using '" + e.getOperator().getLiteral() + "'",
+				if (!TriadTypeSystem.isComparable(left, right) && !isEffect(e)) {
+					error("cannot compare " + left.displayAgainst(right) + " with " + right.displayAgainst(left) + " using '" + e.getOperator().getLiteral() + "'",
 							e, P.getBinaryExpression_Operator(), CommonIssueCodes.INCOMPATIBLE_OPERANDS);
 				}
 			}
@@ -69,6 +72,29 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 				}
 			}
 		}
+	}
+
+	/** An assignment effect {@code f(args) == v} of a postcondition, whose value's type the actor rules check. */
+	private static boolean isEffect(BinaryExpression e) {
+		Action action = EcoreUtil2.getContainerOfType(e, Action.class);
+		return action != null && action.getPost() != null && e.getLeft() instanceof PropertyCall
+				&& Postconditions.conjuncts(action.getPost()).contains(e);
+	}
+
+	/** Whether an earlier parameter of the same owner has the same name (reported as a duplicate). */
+	protected static boolean isDuplicate(Parameter p) {
+		if (!(p.eContainer() instanceof Parameterized owner)) {
+			return false;
+		}
+		for (Parameter other : owner.getParameters()) {
+			if (other == p) {
+				return false;
+			}
+			if (other.getName() != null && other.getName().equals(p.getName())) {
+				return true;
+			}
+		}
+		return false;
 	}
 
 	private void requireBoolean(Expression operand, TriadType type, String operator, EStructuralFeature feature, EObject owner) {
@@ -99,8 +125,8 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 			TriadType expected = TriadTypeSystem.typeOf(params.get(i).getType());
 			TriadType actual = TriadTypeSystem.typeOf(call.getArguments().get(i));
 			if (!TriadTypeSystem.isAssignable(expected, actual)) {
-				error("argument " + (i + 1) + " of '" + p.getName() + "' must be " + expected.display() + ", but is "
-						+ actual.display(), call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.ARGUMENT_TYPE);
+				error("argument " + (i + 1) + " of '" + p.getName() + "' must be " + expected.displayAgainst(actual) + ", but is "
+						+ actual.displayAgainst(expected), call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.ARGUMENT_TYPE);
 			}
 		}
 	}

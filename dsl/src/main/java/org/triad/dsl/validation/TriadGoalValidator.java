@@ -23,6 +23,9 @@ public class TriadGoalValidator extends AbstractTriadGoalValidator {
 	@Check
 	public void checkParametersUsed(Goal goal) {
 		for (Parameter p : goal.getParameters()) {
+			if (isDuplicate(p)) {
+				continue; // reported as a duplicate; references resolve to the first one
+			}
 			boolean used = EcoreUtil2.getAllContentsOfType(goal, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
 			if (!used) {
 				warning("parameter '" + p.getName() + "' of goal '" + goal.getName() + "' is not used", p, P.getNamedElement_Name(),

@@ -40,8 +40,8 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 			TriadType expected = TriadTypeSystem.typeOf(params.get(i).getType());
 			TriadType actual = TriadTypeSystem.typeOf(ref.getArguments().get(i));
 			if (!TriadTypeSystem.isAssignable(expected, actual)) {
-				error("argument " + (i + 1) + " of goal '" + goal.getName() + "' must be " + expected.display() + ", but is "
-						+ actual.display(), ref, P.getGoalReference_Arguments(), i, TaskIssueCodes.ARGUMENT_TYPE);
+				error("argument " + (i + 1) + " of goal '" + goal.getName() + "' must be " + expected.displayAgainst(actual) + ", but is "
+						+ actual.displayAgainst(expected), ref, P.getGoalReference_Arguments(), i, TaskIssueCodes.ARGUMENT_TYPE);
 			}
 		}
 	}
@@ -52,6 +52,9 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 			warning("task '" + task.getName() + "' has no goals", task, P.getNamedElement_Name(), TaskIssueCodes.EMPTY);
 		}
 		for (Parameter p : task.getParameters()) {
+			if (isDuplicate(p)) {
+				continue; // reported as a duplicate; references resolve to the first one
+			}
 			boolean used = EcoreUtil2.getAllContentsOfType(task, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
 			if (!used) {
 				warning("parameter '" + p.getName() + "' of task '" + task.getName() + "' is not used", p, P.getNamedElement_Name(),
