@@ -47,6 +47,10 @@ public class TriadCommonFormatter extends AbstractFormatter2 {
 
 	@Override
 	public void format(Object obj, IFormattableDocument document) {
+		if (getTextRegionAccess().hasSyntaxError()) {
+			// a model that does not parse has no reliable token structure: leave its text as it is
+			return;
+		}
 		if (obj instanceof XtextResource resource) {
 			// the formatter is entered with the resource, not its root
 			for (EObject root : List.copyOf(resource.getContents())) {

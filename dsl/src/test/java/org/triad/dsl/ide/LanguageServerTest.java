@@ -147,8 +147,8 @@ class LanguageServerTest {
 
 	@AfterAll
 	static void stopServer() throws Exception {
+		// no 'exit': Xtext's server ends the JVM on it, which would end the test run
 		server.shutdown().get(TIMEOUT_S, TimeUnit.SECONDS);
-		server.exit();
 		serverListening.cancel(true);
 		clientListening.cancel(true);
 	}
