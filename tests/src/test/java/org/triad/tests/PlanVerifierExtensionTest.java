@@ -15,22 +15,16 @@ import org.triad.dsl.app.ApplicationLoader;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.generator.SchemaBuilder;
 import org.triad.generator.SituationReader;
+import org.triad.examples.hospital.VerifiedHospital;
 import org.triad.refarc.GoalPlanner;
-import org.triad.refarc.OpenRefArc;
-import org.triad.refarc.PlanVerifier;
 import org.triad.refarc.PlanningOutcome;
-import org.triad.refarc.RemoteOperator;
 import org.triad.refarc.Status;
 import org.triad.refarc.model.DryRunWorld;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.refarc.model.SchemaPlanCheck;
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
-import org.triad.runtime.app.TaskInstance;
-import org.triad.runtime.component.ComposedComponent;
 import org.triad.runtime.component.DeterministicScheduler;
-import org.triad.runtime.component.InPort;
-import org.triad.runtime.component.OutPort;
 import org.triad.runtime.component.Scheduler;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.ModelPlanner;
@@ -38,32 +32,14 @@ import org.triad.runtime.schema.ModelTask;
 
 /**
  * Plan verification, which the paper names as hard to add to its architecture, is one component and
- * two connectors here: on the real hospital models, the verifier (replaying plans with the models'
+ * two connectors here: the hospital's architecture model (models/hospital/src/main/arc,
+ * VerifiedHospital.arc) is generated into Java by the build; on the real hospital models, the verifier (replaying plans with the models'
  * pre- and postconditions) rejects a corrupted plan, RefArc re-plans, and a planner that always
  * corrupts ends in a remote-operation request after four refutations.
  */
 class PlanVerifierExtensionTest {
 	private static AppSchema hospital;
 	private static State morning;
-
-	/** The application architecture: RefArc with a plan verifier and a remote operator, connected by ports only. */
-	static final class VerifiedHospital extends ComposedComponent {
-		final InPort<TaskInstance> request = inPort("request", TaskInstance.class);
-		final OutPort<Status> status = outPort("status", Status.class);
-		final OpenRefArc core;
-		final PlanVerifier verifier;
-		final RemoteOperator operator;
-
-		VerifiedHospital(DryRunWorld world, GoalPlanner planner) {
-			core = subcomponent("core", new OpenRefArc(world, planner, world));
-			verifier = subcomponent("verifier", new PlanVerifier(new SchemaPlanCheck(hospital)));
-			operator = subcomponent("operator", new RemoteOperator());
-			connect(request, core.task);
-			connect(core.status, status, operator.status);
-			connect(core.proposedPlan, verifier.proposed);
-			connect(verifier.verified, core.plan);
-		}
-	}
 
 	@BeforeAll
 	static void load() {
@@ -89,7 +65,7 @@ class PlanVerifierExtensionTest {
 
 	private static List<String> run(int corruptions) {
 		DryRunWorld world = new DryRunWorld(hospital, morning);
-		VerifiedHospital app = new VerifiedHospital(world, corrupting(corruptions));
+		VerifiedHospital app = new VerifiedHospital(world, corrupting(corruptions), world, new SchemaPlanCheck(hospital));
 		List<String> log = new ArrayList<>();
 		app.status.observe(s -> log.add(s.toString()));
 		try (DeterministicScheduler scheduler = Scheduler.deterministic()) {

@@ -48,12 +48,25 @@ public final class ApplicationLoader {
 	}
 
 	public static LoadedApplication load(Path root) {
+		return load(root, List.of());
+	}
+
+	/**
+	 * Loads the models below {@code root}, linked with the models below {@code libraries} (e.g. the
+	 * reference architecture's components), which are neither checked nor part of the application.
+	 */
+	public static LoadedApplication load(Path root, List<Path> libraries) {
 		Path dir = root.toAbsolutePath().normalize();
 		List<Path> files = modelFiles(dir);
 		Injector injector = TriadLanguages.anyInjector();
 		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
 		List<ModelDiagnostic> diagnostics = new ArrayList<>();
 		List<Resource> resources = new ArrayList<>();
+		for (Path library : libraries) {
+			for (Path file : modelFiles(library.toAbsolutePath().normalize())) {
+				resourceSet.getResource(URI.createFileURI(file.toString()), true);
+			}
+		}
 		for (Path file : files) {
 			try {
 				resources.add(resourceSet.getResource(URI.createFileURI(file.toString()), true));

@@ -27,15 +27,30 @@ public final class ArcGeneratorMain {
 	}
 
 	public static void main(String[] args) {
-		if (args.length < 2 || args.length > 3) {
-			throw new IllegalArgumentException("usage: ArcGeneratorMain MODEL_DIR OUTPUT_DIR [BASE_PACKAGE]");
+		if (args.length < 2) {
+			throw new IllegalArgumentException("usage: ArcGeneratorMain MODEL_DIR OUTPUT_DIR [BASE_PACKAGE [LIBRARY_MODEL_DIR...]]");
 		}
-		List<Path> written = generate(Path.of(args[0]), Path.of(args[1]), args.length == 3 ? args[2] : "");
+		List<Path> libraries = new ArrayList<>();
+		for (int i = 3; i < args.length; i++) {
+			libraries.add(Path.of(args[i]));
+		}
+		List<Path> written = generate(Path.of(args[0]), Path.of(args[1]), args.length >= 3 ? args[2] : "", libraries);
 		System.out.println("generated " + written.size() + " Java files from .arc models into " + args[1]);
 	}
 
 	public static List<Path> generate(Path models, Path output, String basePackage) {
-		LoadedApplication app = ApplicationLoader.load(models);
+		return generate(models, output, basePackage, List.of());
+	}
+
+	/** Generates the components of the models below {@code models}; those below {@code libraries} are only linked against. */
+	public static List<Path> generate(Path models, Path output, String basePackage, List<Path> libraries) {
+		LoadedApplication app = ApplicationLoader.load(models, libraries);
+		java.util.Set<Resource> own = new java.util.HashSet<>();
+		for (Resource r : app.resourceSet().getResources()) {
+			if (r.getURI().isFile() && Path.of(r.getURI().toFileString()).startsWith(app.root())) {
+				own.add(r);
+			}
+		}
 		String errors = app.diagnostics().stream().filter(d -> d.severity() == ModelDiagnostic.Severity.ERROR)
 				.map(d -> d.format(app.root())).collect(Collectors.joining("\n"));
 		if (!errors.isEmpty()) {
@@ -45,7 +60,7 @@ public final class ArcGeneratorMain {
 		List<Path> written = new ArrayList<>();
 		try {
 			deleteRecursively(output);
-			for (Resource r : app.resourceSet().getResources()) {
+			for (Resource r : own) {
 				if (!r.getContents().isEmpty() && r.getContents().get(0) instanceof ArcModel m && m.getComponent() != null) {
 					for (Map.Entry<String, String> file : generator.files(m.getComponent()).entrySet()) {
 						Path target = output.resolve(file.getKey());
