@@ -1,10 +1,8 @@
 package org.triad.tests;
 
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,10 +10,6 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.triad.dsl.app.ApplicationLoader;
-import org.triad.dsl.app.LoadedApplication;
-import org.triad.generator.SchemaBuilder;
-import org.triad.generator.SituationReader;
 import org.triad.pddl4j.Pddl4jPlanner;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
@@ -33,11 +27,9 @@ class Pddl4jOnHospitalTest {
 
 	@BeforeAll
 	static void load() {
-		LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
-		assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
-		hospital = SchemaBuilder.build(app.application());
-		morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning")).findFirst()
-				.orElseThrow(), hospital);
+		HospitalModels models = HospitalModels.load();
+		hospital = models.schema;
+		morning = models.situation("Morning");
 	}
 
 	@ParameterizedTest

@@ -1,20 +1,14 @@
 package org.triad.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.triad.dsl.app.ApplicationLoader;
-import org.triad.dsl.app.LoadedApplication;
-import org.triad.generator.SchemaBuilder;
-import org.triad.generator.SituationReader;
 import org.triad.examples.hospital.VerifiedHospital;
 import org.triad.refarc.GoalPlanner;
 import org.triad.refarc.PlanningOutcome;
@@ -43,11 +37,9 @@ class PlanVerifierExtensionTest {
 
 	@BeforeAll
 	static void load() {
-		LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
-		assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
-		hospital = SchemaBuilder.build(app.application());
-		morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning")).findFirst()
-				.orElseThrow(), hospital);
+		HospitalModels models = HospitalModels.load();
+		hospital = models.schema;
+		morning = models.situation("Morning");
 	}
 
 	/** A planner that drops the first action of its first {@code corruptions} plans. */
