@@ -132,7 +132,8 @@ final class CompressedGraphSearch {
         }
     }
 
-    record Result(BestFirstSearch.Outcome outcome, int[] plan, long expanded, long generated) { }
+    /** {@code work}: graph nodes visited plus operators tried, the quantity the work limit bounds. */
+    record Result(BestFirstSearch.Outcome outcome, int[] plan, long expanded, long generated, long work) { }
 
     private final SearchTask t;
     private final Structure s;
@@ -180,7 +181,7 @@ final class CompressedGraphSearch {
         StateSpace space = new StateSpace();
         NodeHeap open = new NodeHeap();
         int h0 = h(init, position(init), facts, toAchiever, toGoalNode);
-        if (h0 >= INFINITE) return new Result(BestFirstSearch.Outcome.EXHAUSTED, null, 0, 1);
+        if (h0 >= INFINITE) return new Result(BestFirstSearch.Outcome.EXHAUSTED, null, 0, 1, work);
         int root = space.add(init, -1, -1, 0, h0);
         open.push(key(h0, h0), root);
         long expanded = 0;
@@ -188,15 +189,15 @@ final class CompressedGraphSearch {
         int[] mark = new int[t.numFacts];
         int epoch = 0;
         while (!open.isEmpty()) {
-            if (work > workLimit) return new Result(BestFirstSearch.Outcome.LIMIT, null, expanded, generated);
-            if (System.nanoTime() > deadline) return new Result(BestFirstSearch.Outcome.TIMEOUT, null, expanded, generated);
+            if (work > workLimit) return new Result(BestFirstSearch.Outcome.LIMIT, null, expanded, generated, work);
+            if (System.nanoTime() > deadline) return new Result(BestFirstSearch.Outcome.TIMEOUT, null, expanded, generated, work);
             long k = open.topKey();
             int n = open.pop();
             int[] state = space.state(n);
             int g = space.g(n);
             if (k != key(g + space.h(n), space.h(n))) continue; // stale entry
             int pos = position(state);
-            if (satisfiesFacts(state, facts, goalNeg)) return new Result(BestFirstSearch.Outcome.FOUND, plan(space, n, goalNode), expanded, generated);
+            if (satisfiesFacts(state, facts, goalNeg)) return new Result(BestFirstSearch.Outcome.FOUND, plan(space, n, goalNode), expanded, generated, work);
             expanded++;
             int[] dist = forward(pos);
             epoch++;
@@ -211,7 +212,7 @@ final class CompressedGraphSearch {
                 }
             }
         }
-        return new Result(BestFirstSearch.Outcome.EXHAUSTED, null, expanded, generated);
+        return new Result(BestFirstSearch.Outcome.EXHAUSTED, null, expanded, generated, work);
     }
 
     private int expand(StateSpace space, NodeHeap open, int parent, int[] state, int pos, int g, int[] dist, int o, int[] mark,

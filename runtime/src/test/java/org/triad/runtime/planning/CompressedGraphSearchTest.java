@@ -46,6 +46,18 @@ class CompressedGraphSearchTest {
         PlanValidator.Report report = PlanValidator.validate(d, p, new Plan(steps));
         assertTrue(report.valid(), report.message());
         assertEquals(TestProblems.hospitalOptimal().get(name), steps.size());
+        assertTrue(r.work() < TriadPlanner.GRAPH_SEARCH_WORK / 100, "work " + r.work());
+    }
+
+    @Test
+    void theWorkBoundStopsTheSearch() {
+        Domain d = TestProblems.domain("hospital/domain.pddl");
+        Problem p = TestProblems.problem("hospital/p-50-b.pddl");
+        GroundedProblem.Query q = query(d, p);
+        SearchTask t = relevant(q);
+        CompressedGraphSearch.Result r = new CompressedGraphSearch(t, new Successors(t), Long.MAX_VALUE, 10)
+                .run(q.init(), q.goalPos(), q.goalNeg());
+        assertEquals(BestFirstSearch.Outcome.LIMIT, r.outcome());
     }
 
     @Test
