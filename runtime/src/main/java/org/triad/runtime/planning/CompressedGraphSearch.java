@@ -314,7 +314,7 @@ final class CompressedGraphSearch {
         return d;
     }
 
-    /** Distances from a node; the move used to reach each node is kept in a parallel search by {@link #walk}. */
+    /** Distances from a node, kept for the last few positions (states often share the token's place). */
     private int[] forward(int from) {
         int[] d = forward.get(from);
         if (d != null) return d;
@@ -342,15 +342,17 @@ final class CompressedGraphSearch {
     private void walk(int from, int to, List<Integer> out) {
         if (from == to) return;
         int[] d = reverseDistances(new int[] {to}, 0);
+        if (d[from] >= INFINITE) throw new IllegalStateException("no walk between nodes the search connected");
         for (int v = from; v != to; ) {
+            int next = -1;
             for (int m : s.movesFrom[v]) {
-                int w = t.add[m][0];
-                if (d[w] == d[v] - 1) {
+                if (d[t.add[m][0]] == d[v] - 1) {
                     out.add(m);
-                    v = w;
+                    next = t.add[m][0];
                     break;
                 }
             }
+            v = next;
         }
     }
 
