@@ -27,6 +27,18 @@ final class SearchTask {
     /** Scratch space (heuristic and successor arrays) reused by the next solve that takes it. */
     private final java.util.concurrent.atomic.AtomicReference<Scratch> scratch = new java.util.concurrent.atomic.AtomicReference<>();
 
+    private volatile CompressedGraphSearch.Structure graphStructure;
+
+    /** The token-graph split of this task, computed once (successive goals reuse the task). */
+    CompressedGraphSearch.Structure graphStructure() {
+        CompressedGraphSearch.Structure gs = graphStructure;
+        if (gs == null) {
+            gs = CompressedGraphSearch.structure(this);
+            graphStructure = gs;
+        }
+        return gs;
+    }
+
     record Scratch(FfHeuristic heuristic, Successors successors) { }
 
     Scratch takeScratch() {

@@ -13,6 +13,9 @@ import org.triad.runtime.pddl.Problem;
  * <ol>
  * <li>a single open goal in a graph-like task (every relevant action needs one fact): breadth-first
  *     search over facts ({@link UnaryGraphSearch}), exact;</li>
+ * <li>a single open goal in a task made of a token graph and a small remainder (a robot walking a
+ *     map and acting at places): A* over the states after non-move actions, runs of moves replaced
+ *     by shortest paths ({@link CompressedGraphSearch}), exact; if it exceeds its work bound:</li>
  * <li>a single open goal otherwise: A* with the FF heuristic, bounded in evaluations (the FF
  *     heuristic is not admissible, so shortest plans are likely, not guaranteed; on near-graph
  *     tasks such as a delivery the relaxed plan is close to exact);</li>
@@ -36,6 +39,11 @@ public final class TriadPlanner implements Planner {
      * which keeps stage plans short.
      */
     static final int STAGE_WEIGHT = 1000;
+    /**
+     * Work (graph nodes visited plus operators tried) allowed to {@link CompressedGraphSearch}
+     * before A* takes over (it also bounds the states kept): about 25 times what a delivery on a 2000-node map needs (12,000).
+     */
+    static final long GRAPH_SEARCH_WORK = 300_000;
 
     private final GroundedProblemCache cache;
 
@@ -94,12 +102,26 @@ public final class TriadPlanner implements Planner {
             plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
             if (plan == null) return PlanResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
         } else if (open.size() <= 1) {
-            BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
-            effort[0] += r.expanded();
-            effort[1] += r.evaluated();
-            if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
-            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
-                return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+            boolean tryAstar = true;
+            if (CompressedGraphSearch.applies(task, q.init(), q.goalPos(), q.goalNeg())) {
+                CompressedGraphSearch.Result r = new CompressedGraphSearch(task, succ, deadline, GRAPH_SEARCH_WORK)
+                        .run(q.init(), q.goalPos(), q.goalNeg());
+                effort[0] += r.expanded();
+                effort[1] += r.generated();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                    return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+                }
+                tryAstar = r.outcome() == BestFirstSearch.Outcome.LIMIT;
+            }
+            if (tryAstar) {
+                BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
+                effort[0] += r.expanded();
+                effort[1] += r.evaluated();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                    return PlanResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+                }
             }
         } else {
             // the agenda may use a tenth of the time; the complete search gets the rest
