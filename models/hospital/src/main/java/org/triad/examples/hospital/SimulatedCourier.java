@@ -180,9 +180,4 @@ public final class SimulatedCourier implements IRobot {
         log.add(r);
         return r;
     }
-
-    /** Robot carried items by name, for tests and progress output. */
-    List<String> carriedNames() {
-        return robot.carried().stream().map(org.triad.sim.Item::name).toList();
-    }
 }
