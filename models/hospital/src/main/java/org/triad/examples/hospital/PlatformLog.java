@@ -19,7 +19,8 @@ public final class PlatformLog {
      * @param start   virtual time at its start, s
      * @param time    virtual time at its end, s
      * @param call    the model action or simulator activity
-     * @param failure the simulator's failure name, "REFUSED" for a call the implementation refused, or null on success
+     * @param failure the simulator's failure name, "REFUSED" when the implementation itself declined the call or judged its
+     *                outcome wrong (robot not at the start, door known closed, person not at the goal), or null on success
      */
     public record Entry(double start, double time, String call, boolean success, String failure, String detail) {
         @Override

@@ -86,12 +86,12 @@ public final class SimulatedBuilding implements IWorld {
         person.walkTo(dst.name());
         ActionResult r = courier.robot().follow(p.name(), FOLLOW_MIN, FOLLOW_MAX, WALK_TIMEOUT);
         log.add(r);
-        double off = person.position().distance(floor.plan().waypoint(dst.name()).position());
         if (!r.success()) {
             return false;
         }
+        double off = person.position().distance(floor.plan().waypoint(dst.name()).position());
         if (off > HospitalFloor.AT_TOLERANCE) {
-            log.refused(sim.time(), call, p + " stopped " + off + " m from " + dst);
+            log.refused(sim.time(), call, String.format(java.util.Locale.ROOT, "%s stopped %.2f m from %s", p, off, dst));
             return false;
         }
         whereabouts.arrived(p.name(), dst.name());
