@@ -17,6 +17,7 @@ import org.triad.examples.hospital.PlatformLog;
 import org.triad.refarc.Status;
 import org.triad.sim.Room;
 import org.triad.sim.TraceEvent;
+import org.triad.sim.TracePicture;
 
 import generated.hospital.tasks.CollectAndDeliver;
 
@@ -64,6 +65,7 @@ class HospitalFaultsInSimulationTest {
         double failedAt = doorClosed.get(0).time();
         assertTrue(run.platform().stream().anyMatch(e -> e.time() > failedAt && e.success() && e.call().equals("moveAlong[c5, c6]")),
                 () -> log(run));
+        TracePicture.writePng(h.sim(), HospitalTasksInSimulationTest.PICTURES.resolve("door-closed.png"));
     }
 
     @Test
@@ -84,6 +86,7 @@ class HospitalFaultsInSimulationTest {
         assertTrue(run.platform().stream().anyMatch(e -> e.time() > 63 && e.success() && e.call().equals("moveAlong[c1, c2]")),
                 () -> log(run));
         assertEquals("ward1", h.sim().item("gauze").room().map(Room::name).orElse("none"));
+        TracePicture.writePng(h.sim(), HospitalTasksInSimulationTest.PICTURES.resolve("corridor-blocked.png"));
     }
 
     @Test

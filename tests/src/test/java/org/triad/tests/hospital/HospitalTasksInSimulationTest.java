@@ -21,6 +21,7 @@ import org.triad.refarc.Status;
 import org.triad.sim.Room;
 import org.triad.sim.Trace;
 import org.triad.sim.TraceFrame;
+import org.triad.sim.TracePicture;
 
 import generated.hospital.tasks.CollectAndDeliver;
 import generated.hospital.tasks.Follow;
@@ -94,6 +95,7 @@ class HospitalTasksInSimulationTest {
             farthest = Math.max(farthest, Math.hypot(f.robotX()[0] - f.personX()[alice], f.robotY()[0] - f.personY()[alice]));
         }
         assertTrue(farthest < 4, "Alice was at most " + farthest + " m from the robot");
+        TracePicture.writePng(h.sim(), PICTURES.resolve("guide.png"));
     }
 
     @Test
@@ -134,5 +136,6 @@ class HospitalTasksInSimulationTest {
         assertTrue(frames > 600, "Bob walked for " + frames + " frames");
         assertTrue(nearest >= SimulatedBuilding.FOLLOW_MIN, "the robot came as close as " + nearest + " m");
         assertTrue(farthest <= SimulatedBuilding.FOLLOW_MAX + 0.1, "the robot fell back to " + farthest + " m");
+        TracePicture.writePng(h.sim(), PICTURES.resolve("follow.png"));
     }
 }
