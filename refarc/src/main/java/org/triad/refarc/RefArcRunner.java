@@ -3,6 +3,7 @@ package org.triad.refarc;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.function.Consumer;
 import org.triad.runtime.app.TaskInstance;
 import org.triad.runtime.component.DeterministicScheduler;
 import org.triad.runtime.component.Scheduler;
@@ -23,9 +24,16 @@ public final class RefArcRunner {
     }
 
     public RefArcRun run(TaskInstance task) {
+        return run(task, status -> { });
+    }
+
+    /** Like {@link #run(TaskInstance)}, also handing every status event to {@code observer} as it happens (progress output). */
+    public RefArcRun run(TaskInstance task, Consumer<? super Status> observer) {
+        Objects.requireNonNull(observer, "an observer is required");
         RefArc arc = new RefArc(stateSource, goalPlanner, actionRunner);
         List<Status> statuses = new ArrayList<>();
         arc.status.observe(statuses::add);
+        arc.status.observe(observer);
         try (DeterministicScheduler scheduler = Scheduler.deterministic()) {
             scheduler.deploy(arc);
             scheduler.send(arc.task, task);

@@ -1,0 +1,46 @@
+package org.triad.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code triad demo}: the delivery in the simulated hospital, with progress lines and pictures. */
+class DemoCommandTest {
+
+	@Test
+	void theDemoDeliversTheGauzePrintingProgressAndWritesPictures(@TempDir Path dir) throws Exception {
+		StringWriter out = new StringWriter();
+		StringWriter err = new StringWriter();
+		int code = TriadCli.execute(new String[] { "demo", "-o", dir.toString(), "--close-fire-door-at", "43" }, new PrintWriter(out, true),
+				new PrintWriter(err, true));
+		List<String> lines = Arrays.asList(out.toString().split("\\R"));
+		assertEquals(0, code, out + err.toString());
+		assertTrue(lines.contains("[   0.0 s] task CollectAndDeliver(gauze, storage, ward1) started"), out::toString);
+		assertTrue(lines.contains("[  25.5 s] action Courier.move(c1, storage) succeeded; robot (4.00, 17.88) at storage"), out::toString);
+		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
+		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
+		assertTrue(lines.contains("gauze is now in ward1"), out::toString);
+		assertTrue(lines.contains("Pictures written to " + dir.toAbsolutePath().normalize() + ":"), out::toString);
+		for (String picture : List.of("delivery.png", "delivery.gif", "delivery.html")) {
+			assertTrue(Files.size(dir.resolve(picture)) > 1000, picture);
+		}
+	}
+
+	@Test
+	void aNegativeDoorTimeIsAUserError() {
+		StringWriter out = new StringWriter();
+		StringWriter err = new StringWriter();
+		int code = TriadCli.execute(new String[] { "demo", "--close-fire-door-at", "-5" }, new PrintWriter(out, true), new PrintWriter(err, true));
+		assertEquals(2, code);
+		assertEquals("triad demo: --close-fire-door-at takes a time in seconds >= 0, not -5.0", err.toString().strip());
+	}
+}

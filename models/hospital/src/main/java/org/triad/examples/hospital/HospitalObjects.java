@@ -1,0 +1,109 @@
+package org.triad.examples.hospital;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import generated.hospital.domain.Item;
+import generated.hospital.domain.Person;
+import generated.hospital.domain.Room;
+import generated.hospital.domain.WayPoint;
+
+/**
+ * The domain objects of the simulated hospital, as in the models' Morning situation: one instance per
+ * name, so that the state provider, the planner and the tasks all speak of the same objects.
+ */
+public final class HospitalObjects {
+    private final Map<String, WayPoint> wayPoints = new LinkedHashMap<>();
+    private final Map<String, Room> rooms = new LinkedHashMap<>();
+    private final Map<String, Item> items = new LinkedHashMap<>();
+    private final Map<String, Person> people = new LinkedHashMap<>();
+
+    public HospitalObjects() {
+        HospitalFloor.CORRIDOR_WAYPOINTS.forEach(n -> wayPoints.put(n, new WayPoint(n)));
+        room("storage", "Storage");
+        room("xray", "X-ray");
+        room("ward1", "Ward 1");
+        room("ward2", "Ward 2");
+        room("ward3", "Ward 3");
+        room("lobby", "Lobby");
+        item("gauze", 1);
+        item("syringe", 1);
+        item("bandage", 2);
+        person("alice", "Alice");
+        person("bob", "Bob");
+    }
+
+    private void room(String id, String label) {
+        Room r = new Room(id);
+        r.setName(label);
+        rooms.put(id, r);
+    }
+
+    private void item(String id, int weight) {
+        Item i = new Item(id);
+        i.setLabel(id);
+        i.setWeight(weight);
+        items.put(id, i);
+    }
+
+    private void person(String id, String label) {
+        Person p = new Person(id);
+        p.setName(label);
+        people.put(id, p);
+    }
+
+    /** A corridor waypoint or a room by name. */
+    public WayPoint waypoint(String name) {
+        WayPoint w = rooms.containsKey(name) ? rooms.get(name) : wayPoints.get(name);
+        if (w == null) {
+            throw new IllegalArgumentException("the hospital has no waypoint or room '" + name + "'; it has "
+                    + allWaypointNames());
+        }
+        return w;
+    }
+
+    public Room room(String name) {
+        return require(rooms, name, "room");
+    }
+
+    public Item item(String name) {
+        return require(items, name, "item");
+    }
+
+    public Person person(String name) {
+        return require(people, name, "person");
+    }
+
+    /** Plain waypoints (corridors), without rooms. */
+    public List<WayPoint> corridorWaypoints() {
+        return List.copyOf(wayPoints.values());
+    }
+
+    public List<Room> rooms() {
+        return List.copyOf(rooms.values());
+    }
+
+    public List<Item> items() {
+        return List.copyOf(items.values());
+    }
+
+    public List<Person> people() {
+        return List.copyOf(people.values());
+    }
+
+    private List<String> allWaypointNames() {
+        List<String> all = new ArrayList<>(wayPoints.keySet());
+        all.addAll(rooms.keySet());
+        return all;
+    }
+
+    private static <T> T require(Map<String, T> m, String name, String kind) {
+        T t = m.get(name);
+        if (t == null) {
+            throw new IllegalArgumentException("the hospital has no " + kind + " '" + name + "'; it has " + m.keySet());
+        }
+        return t;
+    }
+}

@@ -1,0 +1,183 @@
+package org.triad.examples.hospital;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
+
+import org.triad.sim.ActionResult;
+import org.triad.sim.Robot;
+import org.triad.sim.Simulation;
+
+import generated.hospital.IRobot;
+import generated.hospital.domain.Item;
+import generated.hospital.domain.Person;
+import generated.hospital.domain.WayPoint;
+
+/**
+ * The robotics expert's implementation of the generated {@code IRobot} (the paper's LogisticsRobot role)
+ * on the simulated robot: each model action is one or two blocking simulator activities, and each
+ * property is read off the simulation. An action returns false when the simulator reports a failure
+ * (the reason goes to the {@link PlatformLog}) or when the robot is not where the action starts.
+ */
+public final class SimulatedCourier implements IRobot {
+    private final HospitalFloor floor;
+    private final HospitalObjects objects;
+    private final Simulation sim;
+    private final Robot robot;
+    private final Whereabouts whereabouts;
+    private final PlatformLog log;
+    private final Set<String> following = new TreeSet<>();
+
+    SimulatedCourier(HospitalFloor floor, HospitalObjects objects, Simulation sim, Robot robot, Whereabouts whereabouts,
+            PlatformLog log) {
+        this.floor = Objects.requireNonNull(floor, "floor");
+        this.objects = Objects.requireNonNull(objects, "objects");
+        this.sim = Objects.requireNonNull(sim, "sim");
+        this.robot = Objects.requireNonNull(robot, "robot");
+        this.whereabouts = Objects.requireNonNull(whereabouts, "whereabouts");
+        this.log = Objects.requireNonNull(log, "log");
+    }
+
+    /** The simulated robot this implementation drives. */
+    public Robot robot() {
+        return robot;
+    }
+
+    /** Drives the model edge's route; fails when a door on it stays closed or people block it (see {@link Robot#moveAlong}). */
+    @Override
+    public boolean move(WayPoint src, WayPoint dst) {
+        String call = "move(" + src + ", " + dst + ")";
+        Optional<List<String>> route = usableRoute(call, src, dst);
+        if (route.isEmpty()) {
+            return false;
+        }
+        return arrived(robot.moveAlong(route.get()), dst);
+    }
+
+    /** Picks the item; first gets within reach of it if it lies further away than the robot's reach. */
+    @Override
+    public boolean pick(Item i, WayPoint w) {
+        String call = "pick(" + i + ", " + w + ")";
+        if (!isAt(call, w)) {
+            return false;
+        }
+        org.triad.sim.Item item = sim.item(i.name());
+        if (!item.isRemoved() && item.holder().isEmpty() && item.position().distance(robot.position()) > robot.spec().reach()) {
+            ActionResult approach = record(robot.approach(i.name()));
+            if (!approach.success()) {
+                return false;
+            }
+        }
+        return record(robot.pick(i.name())).success();
+    }
+
+    /** Puts the item down where the robot stands. */
+    @Override
+    public boolean drop(Item i, WayPoint w) {
+        String call = "drop(" + i + ", " + w + ")";
+        if (!isAt(call, w)) {
+            return false;
+        }
+        return record(robot.place(i.name())).success();
+    }
+
+    /** Leads the person along the model edge's route; the person walks behind and stops where the robot stops. */
+    @Override
+    public boolean guide(Person p, WayPoint src, WayPoint dst) {
+        String call = "guide(" + p + ", " + src + ", " + dst + ")";
+        Optional<List<String>> route = usableRoute(call, src, dst);
+        if (route.isEmpty()) {
+            return false;
+        }
+        // the robot's routing takes the model edge: the hospital's simulator graph has no other short route
+        if (!arrived(robot.guide(p.name(), dst.name()), dst)) {
+            return false;
+        }
+        whereabouts.arrived(p.name(), dst.name());
+        return true;
+    }
+
+    /** Starts following: the robot and the person must be at the same waypoint; from now on {@code following(p)}. */
+    @Override
+    public boolean startFollowing(Person p, WayPoint w) {
+        String call = "startFollowing(" + p + ", " + w + ")";
+        if (!isAt(call, w)) {
+            return false;
+        }
+        String personAt = whereabouts.of(p.name(), sim.person(p.name()).position());
+        if (!personAt.equals(w.name())) {
+            log.refused(sim.time(), call, "person '" + p + "' is at " + personAt + ", not " + w);
+            return false;
+        }
+        following.add(p.name());
+        return true;
+    }
+
+    @Override
+    public WayPoint loc() {
+        return objects.waypoint(whereabouts.of(robot.name(), robot.position()));
+    }
+
+    @Override
+    public boolean carries(Item i) {
+        return robot.carried().stream().anyMatch(it -> it.name().equals(i.name()));
+    }
+
+    @Override
+    public boolean handEmpty() {
+        return robot.carried().isEmpty();
+    }
+
+    @Override
+    public boolean following(Person p) {
+        return following.contains(p.name());
+    }
+
+    /** Whether the robot follows the person (for the world's walk action, which moves both). */
+    boolean isFollowing(String person) {
+        return following.contains(person);
+    }
+
+    /** The route of a model edge from where the robot is, or empty (logged) if it is not at src or the edge is unusable. */
+    private Optional<List<String>> usableRoute(String call, WayPoint src, WayPoint dst) {
+        Optional<List<String>> route = floor.route(src.name(), dst.name());
+        if (route.isEmpty()) {
+            log.refused(sim.time(), call, "no corridor from " + src + " to " + dst);
+            return Optional.empty();
+        }
+        if (!isAt(call, src)) {
+            return Optional.empty();
+        }
+        for (String door : floor.doorsOn(route.get())) {
+            if (robot.knownClosedDoors().contains(door)) {
+                log.refused(sim.time(), call, "door '" + door + "' on the way is closed");
+                return Optional.empty();
+            }
+        }
+        return route;
+    }
+
+    private boolean isAt(String call, WayPoint w) {
+        WayPoint at = loc();
+        if (!at.equals(w)) {
+            log.refused(sim.time(), call, "the robot is at " + at + ", not " + w);
+            return false;
+        }
+        return true;
+    }
+
+    private boolean arrived(ActionResult r, WayPoint dst) {
+        record(r);
+        if (r.success()) {
+            whereabouts.arrived(robot.name(), dst.name());
+        }
+        return r.success();
+    }
+
+    private ActionResult record(ActionResult r) {
+        log.add(r);
+        return r;
+    }
+}

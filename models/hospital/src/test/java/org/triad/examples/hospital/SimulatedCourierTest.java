@@ -1,0 +1,105 @@
+package org.triad.examples.hospital;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+/** The robotics expert's IRobot/IWorld on the simulator, action by action. */
+class SimulatedCourierTest {
+    private final HospitalSimulation h = new HospitalSimulation(1);
+    private final HospitalObjects o = h.objects();
+    private final SimulatedCourier courier = h.courier();
+    private final SimulatedBuilding building = h.building();
+
+    @Test
+    void movesAlongModelEdgesOnlyFromWhereTheRobotIs() {
+        assertEquals(o.room("lobby"), courier.loc());
+        assertFalse(courier.move(o.waypoint("c4"), o.waypoint("c1")), "not at c4");
+        assertFalse(courier.move(o.room("lobby"), o.waypoint("c5")), "no corridor from the lobby to c5");
+        assertEquals(0.0, h.sim().time(), "refusals take no time");
+        assertEquals(List.of("REFUSED", "REFUSED"), h.platformLog().entries().stream().map(PlatformLog.Entry::failure).toList());
+
+        assertTrue(courier.move(o.room("lobby"), o.waypoint("c4")));
+        assertTrue(courier.move(o.waypoint("c4"), o.waypoint("c1")));
+        assertEquals(o.waypoint("c1"), courier.loc());
+        assertTrue(courier.robot().isAt("c1", 0.2));
+    }
+
+    @Test
+    void picksAndDropsItemsWhereTheRobotIs() {
+        assertFalse(courier.pick(o.item("gauze"), o.room("storage")), "the robot is in the lobby");
+        for (String[] leg : new String[][] { {"lobby", "c4"}, {"c4", "c1"}, {"c1", "storage"} }) {
+            assertTrue(courier.move(o.waypoint(leg[0]), o.waypoint(leg[1])));
+        }
+        assertTrue(building.itemAt(o.item("bandage"), o.room("storage")));
+        assertTrue(courier.handEmpty());
+        assertTrue(courier.pick(o.item("bandage"), o.room("storage")));
+        assertTrue(courier.carries(o.item("bandage")));
+        assertFalse(courier.handEmpty());
+        assertFalse(building.itemAt(o.item("bandage"), o.room("storage")), "carried, not lying there");
+        assertFalse(courier.pick(o.item("gauze"), o.room("storage")), "one item at a time");
+        assertEquals("CAPACITY_EXCEEDED", last().failure());
+        assertFalse(courier.drop(o.item("gauze"), o.room("storage")));
+        assertEquals("NOT_CARRYING", last().failure());
+        assertTrue(courier.move(o.room("storage"), o.waypoint("c1")));
+        assertTrue(courier.drop(o.item("bandage"), o.waypoint("c1")));
+        assertTrue(building.itemAt(o.item("bandage"), o.waypoint("c1")));
+    }
+
+    @Test
+    void aClosedDoorFailsTheMoveAndThenTheEdgeIsNoLongerAdjacent() {
+        h.sim().closeDoor(HospitalFloor.FIRE_DOOR);
+        for (String[] leg : new String[][] { {"lobby", "c4"}, {"c4", "c1"}, {"c1", "c2"} }) {
+            assertTrue(courier.move(o.waypoint(leg[0]), o.waypoint(leg[1])));
+        }
+        assertTrue(building.adj(o.waypoint("c2"), o.waypoint("c3")), "not seen yet");
+        assertFalse(courier.move(o.waypoint("c2"), o.waypoint("c3")));
+        assertEquals("DOOR_CLOSED", last().failure());
+        assertEquals(o.waypoint("c2"), courier.loc(), "it stopped in front of the door, nearer c2");
+        assertFalse(building.adj(o.waypoint("c2"), o.waypoint("c3")));
+        assertFalse(building.adj(o.waypoint("c3"), o.waypoint("c2")));
+        assertFalse(courier.move(o.waypoint("c2"), o.waypoint("c3")), "the implementation does not drive into a door it knows closed");
+        assertEquals("REFUSED", last().failure());
+    }
+
+    @Test
+    void guidesAPersonWhoStaysWithTheRobot() {
+        assertEquals(o.room("lobby"), building.personAt(o.person("alice")));
+        assertTrue(courier.guide(o.person("alice"), o.room("lobby"), o.waypoint("c4")));
+        assertEquals(o.waypoint("c4"), building.personAt(o.person("alice")));
+        assertTrue(courier.guide(o.person("alice"), o.waypoint("c4"), o.waypoint("c5")));
+        assertEquals(o.waypoint("c5"), building.personAt(o.person("alice")));
+        assertTrue(h.sim().person("alice").position().distance(courier.robot().position()) < 2.5);
+    }
+
+    @Test
+    void walkingNeedsTheRobotToFollowThePersonFirst() {
+        assertFalse(building.walk(o.person("alice"), o.room("lobby"), o.waypoint("c4")));
+        assertEquals("REFUSED", last().failure());
+        assertFalse(courier.startFollowing(o.person("bob"), o.room("lobby")), "Bob is in ward 2");
+        assertTrue(courier.startFollowing(o.person("alice"), o.room("lobby")));
+        assertTrue(courier.following(o.person("alice")));
+        assertFalse(courier.following(o.person("bob")));
+        assertTrue(building.walk(o.person("alice"), o.room("lobby"), o.waypoint("c4")));
+        assertEquals(o.waypoint("c4"), building.personAt(o.person("alice")));
+        assertEquals(o.waypoint("c4"), courier.loc());
+    }
+
+    @Test
+    void theWorldListsTheModelsObjects() {
+        assertEquals(List.of("c1", "c2", "c3", "c4", "c5", "c6"), building.wayPoints().stream().map(w -> w.name()).toList());
+        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby"), building.rooms().stream().map(r -> r.name()).toList());
+        assertEquals(List.of("gauze", "syringe", "bandage"), building.items().stream().map(i -> i.name()).toList());
+        assertEquals(List.of("alice", "bob"), building.persons().stream().map(p -> p.name()).toList());
+        assertEquals("X-ray", o.room("xray").getName());
+    }
+
+    private PlatformLog.Entry last() {
+        List<PlatformLog.Entry> e = h.platformLog().entries();
+        return e.get(e.size() - 1);
+    }
+}

@@ -1,0 +1,53 @@
+package org.triad.tests.hospital;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.Test;
+import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.LoadedApplication;
+import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.HospitalSimulation;
+import org.triad.generator.SchemaBuilder;
+import org.triad.generator.SituationReader;
+import org.triad.runtime.app.Atom;
+import org.triad.runtime.app.State;
+
+import generated.hospital.HospitalStateProvider;
+
+/** What the generated StateProvider observes on the simulated hospital agrees with the models. */
+class HospitalSimulationSituationTest {
+
+    @Test
+    void theSimulatedHospitalStartsInTheMorningSituationOfTheModels() {
+        LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
+        assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
+        State morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning"))
+                .findFirst().orElseThrow(), SchemaBuilder.build(app.application()));
+
+        HospitalSimulation h = new HospitalSimulation(1);
+        State observed = new HospitalStateProvider(h.courier(), h.building()).currentState();
+        assertEquals(morning, observed);
+    }
+
+    @Test
+    void aDoorTheRobotHasSeenClosedDisconnectsItsCorridorSegment() {
+        HospitalSimulation h = new HospitalSimulation(1);
+        HospitalStateProvider provider = new HospitalStateProvider(h.courier(), h.building());
+        Atom c2c3 = Atom.of("Building", "adj", h.objects().waypoint("c2"), h.objects().waypoint("c3"));
+        Atom c3c2 = Atom.of("Building", "adj", h.objects().waypoint("c3"), h.objects().waypoint("c2"));
+        h.sim().closeDoor(HospitalFloor.FIRE_DOOR);
+        assertTrue(provider.currentState().holds(c2c3), "the robot in the lobby has not seen the door");
+
+        h.courier().robot().moveTo("c2");
+        h.courier().robot().moveTo("c3");
+        assertTrue(h.courier().robot().knownClosedDoors().contains(HospitalFloor.FIRE_DOOR));
+        State s = provider.currentState();
+        assertFalse(s.holds(c2c3));
+        assertFalse(s.holds(c3c2));
+        assertTrue(s.holds(Atom.of("Building", "adj", h.objects().waypoint("c1"), h.objects().waypoint("c2"))));
+    }
+}
