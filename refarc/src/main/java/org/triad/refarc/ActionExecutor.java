@@ -36,6 +36,11 @@ public class ActionExecutor extends ActionExecutorTOP {
             return;
         }
         startActivity("execute", r, () -> runner.execute(r.action()),
-                ok -> result.send(ok ? ActionResult.success(r) : ActionResult.failure(r, "the platform reported failure")));
+                ok -> result.send(ok ? ActionResult.success(r) : ActionResult.failure(r, failureReason(r))));
+    }
+
+    private String failureReason(ActionRequest r) {
+        Optional<String> reason = runner.failureReason(r.action());
+        return reason == null || reason.isEmpty() ? "the platform reported failure" : "the platform reported failure: " + reason.get();
     }
 }

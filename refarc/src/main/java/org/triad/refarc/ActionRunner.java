@@ -11,4 +11,9 @@ public interface ActionRunner {
 
     /** Executes {@code action} on the platform; may take seconds. Returns whether it succeeded; throwing counts as failure. */
     boolean execute(GroundAction action) throws Exception;
+
+    /** Why {@code action}, just executed, returned {@code false}, if the platform can tell; reported on Status. */
+    default Optional<String> failureReason(GroundAction action) {
+        return Optional.empty();
+    }
 }

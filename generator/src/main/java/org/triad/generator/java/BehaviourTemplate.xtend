@@ -185,6 +185,12 @@ class BehaviourTemplate {
 					};
 				}
 
+				@«im.ref("java.lang.Override")»
+				public «im.ref("java.util.Optional")»<String> failureReason(«groundAction» «names.actionParameter») {
+					«im.ref("java.lang.Object")» «names.actorVariable» = «FOR a : actors SEPARATOR ' : '»«names.actionParameter».actor().equals(«JavaLiterals.string(a.name)») ? this.«actorField(a)»«ENDFOR» : null;
+					return «names.actorVariable» instanceof «im.ref("org.triad.runtime.app.FailureExplaining")» «names.explainingVariable» ? «names.explainingVariable».lastFailure() : «im.ref("java.util.Optional")».empty();
+				}
+
 				«argumentHelpers(actors, im)»
 			}
 		'''

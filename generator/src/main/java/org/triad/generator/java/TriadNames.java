@@ -329,6 +329,14 @@ public final class TriadNames {
 		return "part";
 	}
 
+	public String actorVariable() {
+		return "actor";
+	}
+
+	public String explainingVariable() {
+		return "explaining";
+	}
+
 	public String actionSchemaVariable() {
 		return "schema";
 	}

@@ -54,6 +54,15 @@ public final class PlatformLog {
         return List.copyOf(entries);
     }
 
+    /** The most recent call's failure with its reason, e.g. {@code DOOR_CLOSED: ...}, or empty if it succeeded. */
+    public java.util.Optional<String> lastFailure() {
+        if (entries.isEmpty() || entries.get(entries.size() - 1).success()) {
+            return java.util.Optional.empty();
+        }
+        Entry e = entries.get(entries.size() - 1);
+        return java.util.Optional.of(e.failure() + (e.detail() == null || e.detail().isEmpty() ? "" : ": " + e.detail()));
+    }
+
     /** Failures whose simulator reason is {@code failure} (e.g. "DOOR_CLOSED"). */
     public List<Entry> failures(String failure) {
         return entries.stream().filter(e -> failure.equals(e.failure())).toList();

@@ -19,7 +19,7 @@ import generated.hospital.domain.WayPoint;
  * the robot knows about the building (which corridors are passable), where items and people are, and
  * people walking while the robot follows them.
  */
-public final class SimulatedBuilding implements IWorld {
+public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.FailureExplaining {
     /** Distance band, metres, the robot keeps behind a person it follows. */
     public static final double FOLLOW_MIN = 0.8;
     public static final double FOLLOW_MAX = 2.5;
@@ -117,5 +117,11 @@ public final class SimulatedBuilding implements IWorld {
     @Override
     public List<generated.hospital.domain.Person> persons() {
         return objects.people();
+    }
+
+    /** The simulator's reason for the last failed action (it keeps one log for robot and world). */
+    @Override
+    public java.util.Optional<String> lastFailure() {
+        return log.lastFailure();
     }
 }

@@ -21,7 +21,7 @@ import generated.hospital.domain.WayPoint;
  * property is read off the simulation. An action returns false when the simulator reports a failure
  * (the reason goes to the {@link PlatformLog}) or when the robot is not where the action starts.
  */
-public final class SimulatedCourier implements IRobot {
+public final class SimulatedCourier implements IRobot, org.triad.runtime.app.FailureExplaining {
     private final HospitalFloor floor;
     private final HospitalObjects objects;
     private final Simulation sim;
@@ -179,5 +179,11 @@ public final class SimulatedCourier implements IRobot {
     private ActionResult record(ActionResult r) {
         log.add(r);
         return r;
+    }
+
+    /** The simulator's reason for the last failed action (it keeps one log for robot and world). */
+    @Override
+    public java.util.Optional<String> lastFailure() {
+        return log.lastFailure();
     }
 }
