@@ -4,7 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 
@@ -30,7 +30,7 @@ public final class CheckCommand implements Callable<Integer> {
 			spec.commandLine().getErr().println("triad check: not a folder: " + dir);
 			return 2;
 		}
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		for (ModelDiagnostic d : app.diagnostics()) {
 			spec.commandLine().getOut().println(d.format(app.root()));
 		}

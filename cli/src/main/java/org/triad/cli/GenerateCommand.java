@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
 
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.generator.java.TriadJavaGenerator;
@@ -38,7 +39,7 @@ public final class GenerateCommand implements Callable<Integer> {
 		if (!Files.isDirectory(dir)) {
 			throw new ModelSession.UserError("not a folder: " + dir);
 		}
-		LoadedApplication app = TriadJavaGenerator.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		for (ModelDiagnostic d : app.diagnostics()) {
 			spec.commandLine().getOut().println(d.format(app.root()));
 		}

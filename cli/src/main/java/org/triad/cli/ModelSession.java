@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.triad.Situation;
@@ -35,7 +35,7 @@ final class ModelSession {
 		if (!Files.isDirectory(dir)) {
 			throw new UserError("not a folder: " + dir);
 		}
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		if (app.hasErrors()) {
 			StringBuilder b = new StringBuilder("the models have errors (run 'triad check " + dir + "'):");
 			for (ModelDiagnostic d : app.diagnostics()) {

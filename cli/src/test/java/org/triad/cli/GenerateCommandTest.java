@@ -46,6 +46,16 @@ class GenerateCommandTest {
 	}
 
 	@Test
+	void theApplicationFolderGeneratesTheSameApplicationAsItsModelsFolder(@TempDir Path tmp) throws Exception {
+		StringWriter out = new StringWriter();
+		int code = TriadCli.execute(new String[] { "generate", "../models/hospital", "-o", tmp.toString() }, new PrintWriter(out, true),
+				new PrintWriter(new StringWriter(), true));
+		assertEquals(0, code, out.toString());
+		assertTrue(out.toString().contains("of package generated.hospital"), out.toString());
+		assertTrue(Files.exists(tmp.resolve("generated/hospital/HospitalActionExecutor.java")));
+	}
+
+	@Test
 	void modelErrorsStopGenerationWithTheirLocation(@TempDir Path tmp) throws Exception {
 		Files.writeString(tmp.resolve("Bad.cd"), "classdiagram Bad { class A extends Missing; }");
 		StringWriter out = new StringWriter();

@@ -34,6 +34,13 @@ class TriadCliTest {
 		assertEquals(new Run(0, "", ""), run);
 	}
 
+	/** The README's own example: the application folder, whose architecture links against RefArc's models in the refarc jar. */
+	@ParameterizedTest
+	@ValueSource(strings = { "hospital", "logistics" })
+	void checkOfAnApplicationFolderWithItsArchitectureSucceeds(String name) {
+		assertEquals(new Run(0, "", ""), run("check", Path.of("..", "models", name).toString()));
+	}
+
 	@Test
 	void checkOfABadApplicationPrintsFindingsRelativeToTheFolderAndFails(@TempDir Path dir) throws IOException {
 		Path logistics = Path.of("..", "models", "logistics", "src", "main", "models");

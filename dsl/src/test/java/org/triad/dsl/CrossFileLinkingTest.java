@@ -13,7 +13,7 @@ import java.util.stream.Collectors;
 import org.eclipse.xtext.EcoreUtil2;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.Action;
 import org.triad.dsl.triad.Actor;
@@ -30,7 +30,7 @@ class CrossFileLinkingTest {
 		for (int i = 0; i < nameAndText.length; i += 2) {
 			Files.writeString(dir.resolve(nameAndText[i]), nameAndText[i + 1]);
 		}
-		return ApplicationLoader.load(dir);
+		return ApplicationAssembler.load(dir);
 	}
 
 	private static String printed(LoadedApplication app) {
@@ -129,7 +129,7 @@ class CrossFileLinkingTest {
 		assertSame(depot.getTypes().get(0), ((DomainTypeRef) somewhere.getParameters().get(0).getType()).getType());
 		// Depot's Place is no Shop Place: comparing them is a type error; two diagrams are a structure error
 		assertEquals("""
-				Shop.cd:1:1: error app.structure: the application has more than one class diagram: 'Shop' and 'Depot'
+				Shop.cd:1:14: error app.class-diagram-count: the application has more than one class diagram: 'Shop' and 'Depot'
 				Somewhere.goal:3:13: error expr.incompatible-operands: cannot compare Shop.Place with Depot.Place using '=='""", printed(app));
 	}
 
@@ -144,7 +144,7 @@ class CrossFileLinkingTest {
 		LoadedApplication app = load(dir, "Shop.cd", DOMAIN, "Depot.cd", "classdiagram Depot { class Place; }\n", "Bot.actor", ROBOT,
 				"World.actor", WORLD, "Somewhere.goal", goals);
 		assertEquals("""
-				Shop.cd:1:1: error app.structure: the application has more than one class diagram: 'Shop' and 'Depot'
+				Shop.cd:1:14: error app.class-diagram-count: the application has more than one class diagram: 'Shop' and 'Depot'
 				Somewhere.goal:2:16: error link.unknown-type: unknown type 'Room'""", printed(app));
 	}
 }

@@ -8,7 +8,7 @@ import java.util.stream.Collectors;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 
@@ -19,7 +19,7 @@ class ExampleModelsTest {
 	@ValueSource(strings = { "logistics", "hospital" })
 	void exampleApplicationHasNoDiagnostics(String name) {
 		Path dir = Path.of("..", "models", name, "src", "main", "models");
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		String printed = app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n"));
 		assertEquals("", printed);
 		assertNotNull(app.application().getRobot());

@@ -9,7 +9,7 @@ import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /**
@@ -61,7 +61,7 @@ class PaperListingsTest {
 		// the paper shows the domain and the world only as a figure (Fig. 2); these are the shipped ones
 		Files.copy(LOGISTICS.resolve("LogisticsDomain.cd"), dir.resolve("LogisticsDomain.cd"));
 		Files.copy(LOGISTICS.resolve("RoomsWorld.actor"), dir.resolve("RoomsWorld.actor"));
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		assertEquals("", app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n")));
 		assertEquals("LogisticsRobot", app.application().getRobot().getName());
 		assertEquals(1, app.application().getTasks().size());

@@ -26,7 +26,7 @@ import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.Issue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 
@@ -221,7 +221,7 @@ public class RobustnessTest {
 		String where = "batch " + dir.getFileName() + " " + names;
 		int logged = log.errors.size();
 		try {
-			LoadedApplication app = ApplicationLoader.load(dir);
+			LoadedApplication app = ApplicationAssembler.load(dir);
 			for (ModelDiagnostic d : app.diagnostics()) {
 				if (d.line() < 1 || d.column() < 1 || d.code() == null || d.code().isEmpty() || d.message().startsWith("cannot read the file") || d.message().startsWith("cannot check the file")) {
 					problems.add(where + ": " + d.format(dir));

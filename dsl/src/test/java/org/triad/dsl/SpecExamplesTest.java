@@ -9,7 +9,7 @@ import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /**
@@ -80,7 +80,7 @@ class SpecExamplesTest {
 				domain Hospital;
 				goal IsAt(WayPoint w) { Courier.loc() == w }
 				""");
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		assertEquals("", app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n")));
 	}
 
@@ -100,7 +100,7 @@ class SpecExamplesTest {
 				}
 				""");
 		Files.writeString(dir.resolve("Building.actor"), "domain Hospital;\nworld Building {\n}\n");
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		assertEquals("", app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n")));
 	}
 }

@@ -6,7 +6,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
@@ -24,7 +24,7 @@ public final class HospitalPlanningBenchmark {
 
 	public static void main(String[] args) {
 		Path models = Path.of(args.length > 0 ? args[0] : "models/hospital/src/main/models");
-		LoadedApplication app = ApplicationLoader.load(models);
+		LoadedApplication app = ApplicationAssembler.load(models);
 		if (app.hasErrors()) {
 			throw new IllegalStateException("hospital models have errors: " + app.diagnostics());
 		}

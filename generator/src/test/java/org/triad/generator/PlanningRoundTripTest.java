@@ -13,7 +13,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.Situation;
 import org.triad.runtime.app.Atom;
@@ -34,7 +34,7 @@ class PlanningRoundTripTest {
 
 	@BeforeAll
 	static void load() {
-		LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
+		LoadedApplication app = ApplicationAssembler.load(Path.of("..", "models", "hospital", "src", "main", "models"));
 		assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
 		hospital = SchemaBuilder.build(app.application());
 		Situation s = app.application().getSituations().stream().filter(x -> x.getName().equals("Morning")).findFirst().orElseThrow();

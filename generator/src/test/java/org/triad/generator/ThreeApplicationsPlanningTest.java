@@ -11,7 +11,7 @@ import java.util.List;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
@@ -69,7 +69,7 @@ class ThreeApplicationsPlanningTest {
 	}
 
 	private static AppSchemaAndState load(String app, String situation) {
-		LoadedApplication loaded = ApplicationLoader.load(Path.of(folder(app)));
+		LoadedApplication loaded = ApplicationAssembler.load(Path.of(folder(app)));
 		assertFalse(loaded.hasErrors(), () -> loaded.diagnostics().toString());
 		AppSchema schema = SchemaBuilder.build(loaded.application());
 		State state = SituationReader.read(loaded.application().getSituations().stream().filter(x -> x.getName().equals(situation))

@@ -30,7 +30,7 @@ import javax.tools.ToolProvider;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.arc.ArcModel;
 import org.triad.dsl.arc.ComponentType;
@@ -52,7 +52,7 @@ class GeneratedArchitectureTest {
 
     @Test
     void generatedClassesReplaceTheStandInsAndRun() throws Exception {
-        LoadedApplication app = ApplicationLoader.load(MODELS);
+        LoadedApplication app = ApplicationAssembler.load(MODELS);
         assertEquals("", app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n")));
         Map<String, String> generated = new LinkedHashMap<>();
         ArcGenerator generator = new ArcGenerator(new ArcNames("org.triad"));

@@ -2,7 +2,7 @@ package org.triad.tests;
 
 import java.nio.file.Path;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.generator.SchemaBuilder;
 import org.triad.generator.SituationReader;
@@ -23,7 +23,7 @@ final class HospitalModels {
 
 	/** Loads the models; they must be free of errors. */
 	static HospitalModels load() {
-		LoadedApplication app = ApplicationLoader.load(FOLDER);
+		LoadedApplication app = ApplicationAssembler.load(FOLDER);
 		if (app.hasErrors()) {
 			throw new AssertionError("the hospital models have errors: " + app.diagnostics());
 		}

@@ -41,6 +41,16 @@ public final class CommonIssueCodes {
 	public static final String DUPLICATE_PARAMETER = "common.duplicate-parameter";
 	/** Two elements of the application (class diagrams, actors, goals, tasks, situations) with the same name. */
 	public static final String DUPLICATE_NAME = "app.duplicate-name";
-	/** An application without a class diagram, robot or world, or with more than one of them. */
+	/**
+	 * No longer reported: replaced by {@link #CLASS_DIAGRAM_COUNT}, {@link #ROBOT_COUNT} and
+	 * {@link #WORLD_COUNT}, one code per rule of {@link org.triad.dsl.app.ApplicationStructure}.
+	 */
+	@Deprecated
 	public static final String APPLICATION_STRUCTURE = "app.structure";
+	/** An application without a class diagram or with more than one (the class diagram names the application). */
+	public static final String CLASS_DIAGRAM_COUNT = "app.class-diagram-count";
+	/** An application without a robot actor (several robots: {@link ActorIssueCodes#DUPLICATE_KIND}). */
+	public static final String ROBOT_COUNT = "app.robot-count";
+	/** An application without a world actor (several worlds: {@link ActorIssueCodes#DUPLICATE_KIND}). */
+	public static final String WORLD_COUNT = "app.world-count";
 }

@@ -6,14 +6,9 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
-import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
-import org.eclipse.xtext.resource.IEObjectDescription;
-import org.eclipse.xtext.resource.IResourceDescriptions;
-import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
-import org.eclipse.xtext.validation.CheckType;
 import org.triad.dsl.semantics.PostconditionEffect;
 import org.triad.dsl.semantics.Postconditions;
 import org.triad.dsl.triad.Action;
@@ -24,13 +19,8 @@ import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
 
-import com.google.inject.Inject;
-
 /** Rules of robot and world actors; codes in {@link ActorIssueCodes}. */
 public class TriadActorValidator extends AbstractTriadActorValidator {
-	@Inject
-	private ResourceDescriptionsProvider indexProvider;
-
 	@Check
 	public void checkUniqueMembers(Actor actor) {
 		Set<String> seen = new HashSet<>();
@@ -112,24 +102,5 @@ public class TriadActorValidator extends AbstractTriadActorValidator {
 
 	private static String analysisCode(Postconditions.Problem problem) {
 		return problem.badValue() ? ActorIssueCodes.EFFECT_VALUE : ActorIssueCodes.POST_NOT_EFFECT;
-	}
-
-	@Check(CheckType.NORMAL)
-	public void checkOneActorOfEachKind(Actor actor) {
-		if (actor.eResource() == null) {
-			return;
-		}
-		IResourceDescriptions index = indexProvider.getResourceDescriptions(actor.eResource());
-		for (IEObjectDescription d : index.getExportedObjectsByType(P.getActor())) {
-			if (d.getEObjectURI().equals(EcoreUtil.getURI(actor))) {
-				continue;
-			}
-			EObject other = EcoreUtil.resolve(d.getEObjectOrProxy(), actor.eResource().getResourceSet());
-			if (other instanceof Actor o && o.getKind() == actor.getKind()) {
-				error("an application has one " + actor.getKind().getLiteral() + ", but '" + o.getName() + "' in "
-						+ d.getEObjectURI().lastSegment() + " is one too", actor, P.getNamedElement_Name(), ActorIssueCodes.DUPLICATE_KIND);
-				return;
-			}
-		}
 	}
 }

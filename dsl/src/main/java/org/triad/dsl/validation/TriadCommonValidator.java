@@ -1,10 +1,12 @@
 package org.triad.dsl.validation;
 
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.util.EcoreUtil;
@@ -16,6 +18,7 @@ import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.CheckType;
 import org.eclipse.xtext.EcoreUtil2;
+import org.triad.dsl.app.ApplicationStructure;
 import org.triad.dsl.semantics.Postconditions;
 import org.triad.dsl.triad.Action;
 import org.triad.dsl.triad.Actor;
@@ -167,6 +170,44 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 				error("duplicate name '" + element.getName() + "': a " + kind(other) + " in " + other.getEObjectURI().lastSegment()
 						+ " has the same name", element, P.getNamedElement_Name(), CommonIssueCodes.DUPLICATE_NAME);
 				return;
+			}
+		}
+	}
+
+	/**
+	 * The application's structure rule ({@link ApplicationStructure}): one class diagram, one robot,
+	 * one world among every model the index sees, reported on the element that breaks it.
+	 */
+	@Check(CheckType.NORMAL)
+	public void checkApplicationStructure(ClassDiagram cd) {
+		reportStructure(cd);
+	}
+
+	@Check(CheckType.NORMAL)
+	public void checkApplicationStructure(Actor actor) {
+		reportStructure(actor);
+	}
+
+	private void reportStructure(NamedElement element) {
+		if (element.eResource() == null) {
+			return;
+		}
+		IResourceDescriptions index = indexProvider.getResourceDescriptions(element.eResource());
+		List<EObject> candidates = new ArrayList<>();
+		for (EClass type : List.of(P.getClassDiagram(), P.getActor())) {
+			for (IEObjectDescription d : index.getExportedObjectsByType(type)) {
+				EObject resolved = EcoreUtil.resolve(d.getEObjectOrProxy(), element);
+				if (!resolved.eIsProxy() && !candidates.contains(resolved)) {
+					candidates.add(resolved);
+				}
+			}
+		}
+		if (!candidates.contains(element)) {
+			candidates.add(element); // not indexed (e.g. a name with a syntax error): still part of the application
+		}
+		for (ApplicationStructure.Violation v : ApplicationStructure.of(candidates).violations()) {
+			if (v.element() == element) {
+				error(v.message(), element, P.getNamedElement_Name(), v.code());
 			}
 		}
 	}

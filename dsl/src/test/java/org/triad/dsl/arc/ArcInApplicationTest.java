@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /** .arc files sit next to an application's other models: loaded and checked with them, without disturbing them. */
@@ -37,12 +37,12 @@ class ArcInApplicationTest {
 				  core.status -> status, operator.status;
 				}
 				""");
-		LoadedApplication loaded = ApplicationLoader.load(app);
+		LoadedApplication loaded = ApplicationAssembler.load(app);
 		assertEquals("", loaded.diagnostics().stream().map(d -> d.format(loaded.root())).collect(Collectors.joining("\n")));
 
 		Files.writeString(app.resolve("arc/HospitalApp.arc"), Files.readString(app.resolve("arc/HospitalApp.arc"))
 				.replace("core.status -> status, operator.status;", "core.status -> status, operator.status, faults;"));
-		LoadedApplication bad = ApplicationLoader.load(app);
+		LoadedApplication bad = ApplicationAssembler.load(app);
 		// the runtime feeds 'faults'; nothing may send to it, least of all a Status
 		assertEquals(List.of("arc/HospitalApp.arc:12:43: error arc.direction-mismatch", "arc/HospitalApp.arc:12:43: error arc.type-mismatch"),
 				bad.diagnostics().stream().map(d -> d.format(bad.root())).map(s -> s.substring(0, s.indexOf(':', s.indexOf("error"))))

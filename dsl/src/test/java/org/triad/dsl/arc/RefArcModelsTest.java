@@ -8,7 +8,7 @@ import java.util.stream.Collectors;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.junit.jupiter.api.Test;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /** The reference architecture's models (refarc/src/main/arc) parse, link and validate clean through the application loader. */
@@ -16,7 +16,7 @@ class RefArcModelsTest {
 
 	@Test
 	void refarcModelsHaveNoDiagnostics() {
-		LoadedApplication app = ApplicationLoader.load(Path.of("..", "refarc", "src", "main", "arc"));
+		LoadedApplication app = ApplicationAssembler.load(Path.of("..", "refarc", "src", "main", "arc"));
 		String printed = app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n"));
 		assertEquals("", printed);
 		List<String> components = app.resourceSet().getResources().stream().map(Resource::getContents)

@@ -15,7 +15,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 
@@ -43,7 +43,7 @@ class RuleCasesTest {
 			} else {
 				assertTrue(expected.isEmpty(), c + ": a good case expects nothing");
 			}
-			LoadedApplication app = ApplicationLoader.load(dir);
+			LoadedApplication app = ApplicationAssembler.load(dir);
 			List<ModelDiagnostic> unexpected = new ArrayList<>(app.diagnostics());
 			List<RuleCase.Expectation> missing = new ArrayList<>();
 			for (RuleCase.Expectation e : expected) {

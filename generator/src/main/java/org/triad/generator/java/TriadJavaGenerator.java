@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.triad.Actor;
@@ -25,6 +25,11 @@ import org.triad.generator.SchemaBuilder;
  * Generates the Java code of an application (paper, Sect. 4): domain classes, {@code IRobot} and
  * {@code IWorld}, goal and task classes, the application schema, and the state provider and action
  * executor behaviours of RefArc. The models must have been checked without errors.
+ * <p>
+ * The one generator entry of every build: the command line ({@code triad generate}), the Maven build
+ * (through {@link TriadApplicationGenerator}) and the Gradle plugin load an application with
+ * {@link ApplicationAssembler#load} and write it with {@link #generate(Application, String, Path)}
+ * (or take {@link #files} for an Xtext file system access).
  */
 public final class TriadJavaGenerator {
 	/** One generated compilation unit. */
@@ -95,28 +100,6 @@ public final class TriadJavaGenerator {
 		return written;
 	}
 
-	/**
-	 * The name of the application whose models are in {@code models}: the folder's name, or, for the
-	 * Maven layout {@code <project>/src/main/models}, the project folder's name.
-	 */
-	public static String applicationName(Path models) {
-		Path dir = models.toAbsolutePath().normalize();
-		Path main = dir.getParent();
-		Path src = main == null ? null : main.getParent();
-		if (src != null && src.getParent() != null && dir.getFileName().toString().equals("models")
-				&& main.getFileName().toString().equals("main") && src.getFileName().toString().equals("src")) {
-			return src.getParent().getFileName().toString();
-		}
-		return dir.getFileName() == null ? "application" : dir.getFileName().toString();
-	}
-
-	/** Loads and checks the models below a folder, naming the application as {@link #applicationName} does. */
-	public static LoadedApplication load(Path models) {
-		LoadedApplication loaded = ApplicationLoader.load(models);
-		loaded.application().setName(applicationName(models));
-		return loaded;
-	}
-
 	/** The classes whose objects can exist: those that are not abstract. */
 	static List<DomainClass> concreteClasses(Application app) {
 		return app.getDomain().getTypes().stream()
@@ -142,7 +125,7 @@ public final class TriadJavaGenerator {
 			System.exit(2);
 		}
 		Path models = Path.of(args[0]);
-		LoadedApplication loaded = load(models);
+		LoadedApplication loaded = ApplicationAssembler.load(models);
 		for (ModelDiagnostic d : loaded.diagnostics()) {
 			System.err.println(d.format(Path.of("").toAbsolutePath()));
 		}

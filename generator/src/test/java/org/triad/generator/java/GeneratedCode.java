@@ -20,6 +20,7 @@ import javax.tools.JavaFileObject;
 import javax.tools.StandardJavaFileManager;
 import javax.tools.ToolProvider;
 
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.Application;
 
@@ -41,7 +42,7 @@ final class GeneratedCode {
 
 	/** Loads the models below {@code models}, generates Java into {@code dir} and compiles it with all warnings as errors. */
 	static GeneratedCode of(Path models, Path dir) throws IOException {
-		LoadedApplication loaded = TriadJavaGenerator.load(models);
+		LoadedApplication loaded = ApplicationAssembler.load(models);
 		assertFalse(loaded.hasErrors(), () -> "the example models have errors: " + loaded.diagnostics());
 		Application app = loaded.application();
 		String pkg = TriadNames.defaultBasePackage(app);

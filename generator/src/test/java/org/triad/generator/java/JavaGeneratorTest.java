@@ -52,9 +52,9 @@ class JavaGeneratorTest {
 	@Test
 	void robotInterfaceOfListing1IsThePapers() throws Exception {
 		assertEquals("""
-				package generated.logistics;
+				package generated.logisticsdomain;
 
-				import generated.logistics.domain.WayPoint;
+				import generated.logisticsdomain.domain.WayPoint;
 
 				/** The robot {@code LogisticsRobot}: implement it for a platform. Generated: do not edit. */
 				public interface IRobot {
@@ -183,7 +183,7 @@ class JavaGeneratorTest {
 	void actionExecutorChecksPreconditionsAndCallsTheActorsMethods() throws Exception {
 		State floor = situation(logistics, "Floor");
 		StateBackedActors actors = new StateBackedActors(logistics, schemaOf(logistics), floor);
-		ActionRunner executor = (ActionRunner) logistics.load("LogisticsActionExecutor").getConstructors()[0]
+		ActionRunner executor = (ActionRunner) logistics.load("LogisticsDomainActionExecutor").getConstructors()[0]
 				.newInstance(actors.robot, actors.world);
 		DomainObject office = actors.object("office");
 		DomainObject c1 = actors.object("c1");

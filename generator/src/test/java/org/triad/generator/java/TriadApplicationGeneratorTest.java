@@ -1,12 +1,12 @@
 package org.triad.generator.java;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -17,6 +17,7 @@ import org.eclipse.xtext.generator.IGenerator2;
 import org.eclipse.xtext.generator.InMemoryFileSystemAccess;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.ClassDiagram;
 
@@ -24,7 +25,7 @@ import org.triad.dsl.triad.ClassDiagram;
 class TriadApplicationGeneratorTest {
 	@Test
 	void classDiagramResourceGeneratesTheWholeApplication() {
-		LoadedApplication loaded = TriadJavaGenerator.load(Path.of("../models/hospital/src/main/models"));
+		LoadedApplication loaded = ApplicationAssembler.load(Path.of("../models/hospital/src/main/models"));
 		Resource cd = loaded.application().getDomain().eResource();
 		InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
 		new TriadApplicationGenerator().doGenerate(cd, fsa, new GeneratorContext());
@@ -41,7 +42,7 @@ class TriadApplicationGeneratorTest {
 
 	@Test
 	void otherModelsGenerateNothingOnTheirOwn() {
-		LoadedApplication loaded = TriadJavaGenerator.load(Path.of("../models/logistics/src/main/models"));
+		LoadedApplication loaded = ApplicationAssembler.load(Path.of("../models/logistics/src/main/models"));
 		InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
 		for (Resource r : loaded.resourceSet().getResources()) {
 			if (!(r.getContents().get(0) instanceof ClassDiagram)) {
@@ -52,7 +53,7 @@ class TriadApplicationGeneratorTest {
 	}
 
 	@Test
-	void anApplicationWithTwoRobotsIsRefusedNamingThem(@TempDir Path dir) throws IOException {
+	void anApplicationWithTwoRobotsGeneratesNothingAndIsReportedOnBothRobots(@TempDir Path dir) throws IOException {
 		Path models = Path.of("../models/logistics/src/main/models");
 		try (var files = Files.list(models)) {
 			for (Path f : files.toList()) {
@@ -60,12 +61,14 @@ class TriadApplicationGeneratorTest {
 			}
 		}
 		Files.writeString(dir.resolve("Spare.actor"), "domain LogisticsDomain;\nrobot Spare {\n  property WayPoint loc();\n}\n");
-		LoadedApplication loaded = TriadJavaGenerator.load(dir);
+		LoadedApplication loaded = ApplicationAssembler.load(dir);
+		assertEquals(List.of("LogisticsRobot.actor:3:7: error actor.duplicate-kind: an application has one robot, but 'Spare' in Spare.actor is one too",
+				"Spare.actor:2:7: error actor.duplicate-kind: an application has one robot, but 'LogisticsRobot' in LogisticsRobot.actor is one too"),
+				loaded.diagnostics().stream().map(d -> d.format(loaded.root())).toList());
 		Resource cd = loaded.application().getDomain().eResource();
-		IllegalStateException e = assertThrows(IllegalStateException.class,
-				() -> new TriadApplicationGenerator().doGenerate(cd, new InMemoryFileSystemAccess(), new GeneratorContext()));
-		assertTrue(e.getMessage().contains("needs exactly one robot to generate Java, found LogisticsRobot (LogisticsRobot.actor), Spare (Spare.actor)"),
-				e.getMessage());
+		InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
+		new TriadApplicationGenerator().doGenerate(cd, fsa, new GeneratorContext());
+		assertEquals(Map.of(), fsa.getAllFiles());
 	}
 
 	@Test

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.examples.hospital.HospitalSimulation;
@@ -23,7 +23,7 @@ class HospitalSimulationSituationTest {
 
     @Test
     void theSimulatedHospitalStartsInTheMorningSituationOfTheModels() {
-        LoadedApplication app = ApplicationLoader.load(Path.of("..", "models", "hospital", "src", "main", "models"));
+        LoadedApplication app = ApplicationAssembler.load(Path.of("..", "models", "hospital", "src", "main", "models"));
         assertFalse(app.hasErrors(), () -> app.diagnostics().toString());
         State morning = SituationReader.read(app.application().getSituations().stream().filter(s -> s.getName().equals("Morning"))
                 .findFirst().orElseThrow(), SchemaBuilder.build(app.application()));

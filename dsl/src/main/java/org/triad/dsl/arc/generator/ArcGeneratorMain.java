@@ -12,7 +12,7 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.eclipse.emf.ecore.resource.Resource;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.arc.ArcModel;
@@ -44,7 +44,7 @@ public final class ArcGeneratorMain {
 
 	/** Generates the components of the models below {@code models}; those below {@code libraries} are only linked against. */
 	public static List<Path> generate(Path models, Path output, String basePackage, List<Path> libraries) {
-		LoadedApplication app = ApplicationLoader.load(models, libraries);
+		LoadedApplication app = ApplicationAssembler.load(models, libraries);
 		java.util.Set<Resource> own = new java.util.HashSet<>();
 		for (Resource r : app.resourceSet().getResources()) {
 			if (r.getURI().isFile() && Path.of(r.getURI().toFileString()).startsWith(app.root())) {

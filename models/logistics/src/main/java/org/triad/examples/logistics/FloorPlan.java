@@ -5,9 +5,9 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
-import generated.logistics.IWorld;
-import generated.logistics.domain.Room;
-import generated.logistics.domain.WayPoint;
+import generated.logisticsdomain.IWorld;
+import generated.logisticsdomain.domain.Room;
+import generated.logisticsdomain.domain.WayPoint;
 
 /** A handcrafted world: a fixed floor plan of waypoints and rooms, connected in both directions. */
 public class FloorPlan implements IWorld {

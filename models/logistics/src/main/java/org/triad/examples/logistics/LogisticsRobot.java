@@ -2,8 +2,8 @@ package org.triad.examples.logistics;
 
 import java.util.Objects;
 
-import generated.logistics.IRobot;
-import generated.logistics.domain.WayPoint;
+import generated.logisticsdomain.IRobot;
+import generated.logisticsdomain.domain.WayPoint;
 
 /**
  * The handcrafted implementation of the generated {@code IRobot} (the paper's Fig. 4): here a robot

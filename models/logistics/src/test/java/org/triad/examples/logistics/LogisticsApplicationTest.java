@@ -13,12 +13,12 @@ import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.Transitions;
 
-import generated.logistics.LogisticsActionExecutor;
-import generated.logistics.LogisticsSchema;
-import generated.logistics.LogisticsStateProvider;
-import generated.logistics.domain.Room;
-import generated.logistics.domain.WayPoint;
-import generated.logistics.tasks.GoTo;
+import generated.logisticsdomain.LogisticsDomainActionExecutor;
+import generated.logisticsdomain.LogisticsDomainSchema;
+import generated.logisticsdomain.LogisticsDomainStateProvider;
+import generated.logisticsdomain.domain.Room;
+import generated.logisticsdomain.domain.WayPoint;
+import generated.logisticsdomain.tasks.GoTo;
 
 /** The generated behaviours driving the handcrafted robot and world: what they observe and do agrees with the models. */
 class LogisticsApplicationTest {
@@ -28,8 +28,8 @@ class LogisticsApplicationTest {
 	private final Room office = floor.room("office", "Office");
 	private final Room lab = floor.room("lab", "Lab");
 	private final LogisticsRobot robot = new LogisticsRobot(floor.connect(office, c1).connect(c1, c2).connect(c2, lab), office);
-	private final LogisticsStateProvider provider = new LogisticsStateProvider(robot, floor);
-	private final LogisticsActionExecutor executor = new LogisticsActionExecutor(robot, floor);
+	private final LogisticsDomainStateProvider provider = new LogisticsDomainStateProvider(robot, floor);
+	private final LogisticsDomainActionExecutor executor = new LogisticsDomainActionExecutor(robot, floor);
 
 	@Test
 	void stateProviderObservesRobotAndWorld() {
@@ -43,7 +43,7 @@ class LogisticsApplicationTest {
 
 	@Test
 	void executedActionsChangeTheWorldAsTheirPostconditionsSay() {
-		Transitions transitions = new Transitions(LogisticsSchema.SCHEMA);
+		Transitions transitions = new Transitions(LogisticsDomainSchema.SCHEMA);
 		GroundAction move = new GroundAction("LogisticsRobot", "move", List.of(office, c1));
 		State before = provider.currentState();
 		assertEquals(Optional.empty(), executor.violatedPrecondition(move, before));
