@@ -38,8 +38,8 @@ public final class PddlCommand implements Callable<Integer> {
 		ModelGoal g = new ModelGoal(session.schema, call.name(), call.args());
 		PddlTranslator.Task task = new PddlTranslator(session.schema).translate(s, g.schema(), g.binding());
 		Files.createDirectories(out);
-		Files.writeString(out.resolve("domain.pddl"), task.domain());
-		Files.writeString(out.resolve("problem.pddl"), task.problem());
+		Files.writeString(out.resolve("domain.pddl"), task.domainText());
+		Files.writeString(out.resolve("problem.pddl"), task.problemText());
 		spec.commandLine().getOut().println("wrote " + out.resolve("domain.pddl") + " and " + out.resolve("problem.pddl"));
 		return 0;
 	}

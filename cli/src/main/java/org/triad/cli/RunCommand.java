@@ -12,7 +12,7 @@ import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.State;
 import org.triad.planner.PddlPlanner;
 import org.triad.planner.PddlPlanners;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.ModelTask;
 
 import picocli.CommandLine;
@@ -72,7 +72,7 @@ public final class RunCommand implements Callable<Integer> {
 		} catch (IllegalArgumentException e) {
 			throw new ModelSession.UserError(e.getMessage());
 		}
-		ModelPlanner modelPlanner = new ModelPlanner(session.schema, engine, Duration.ofMillis((long) (planningTimeout * 1000)));
+		GoalSolver modelPlanner = new GoalSolver(session.schema, engine, Duration.ofMillis((long) (planningTimeout * 1000)));
 		RefArcRun run = new RefArcRunner(world, new SchemaGoalPlanner(modelPlanner), world).run(instance);
 		for (Status status : run.statuses()) {
 			spec.commandLine().getOut().println(status);

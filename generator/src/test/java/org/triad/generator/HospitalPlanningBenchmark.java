@@ -10,7 +10,7 @@ import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 
 /**
  * Benchmark (not a test): how long the Planner component needs per hospital goal, from the current
@@ -33,7 +33,7 @@ public final class HospitalPlanningBenchmark {
 				.findFirst().orElseThrow(), schema);
 		String[][] goals = { { "IsAt", "ward3" }, { "Holds", "gauze" }, { "Delivered", "gauze", "ward1" }, { "PersonAt", "alice", "xray" },
 				{ "FollowedTo", "alice", "ward2" } };
-		ModelPlanner planner = new ModelPlanner(schema);
+		GoalSolver planner = new GoalSolver(schema);
 		System.out.println("| goal | plan length | median ms | p90 ms |");
 		System.out.println("|---|---|---|---|");
 		for (String[] g : goals) {

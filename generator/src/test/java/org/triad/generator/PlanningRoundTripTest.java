@@ -21,7 +21,7 @@ import org.triad.runtime.app.State;
 import org.triad.planner.pddl.PddlParser;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.ModelGoal;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.PlanChecker;
 
 /**
@@ -50,7 +50,7 @@ class PlanningRoundTripTest {
 		if (b != null) {
 			args.add(morning.object(b).orElseThrow());
 		}
-		ModelPlanner.Outcome outcome = new ModelPlanner(hospital).plan(goal, args, morning);
+		GoalSolver.Outcome outcome = new GoalSolver(hospital).plan(goal, args, morning);
 		assertNull(outcome.failure());
 		PlanChecker.Verdict verdict = new PlanChecker(hospital).check(morning, outcome.plan(), new ModelGoal(hospital, goal, args));
 		assertTrue(verdict.valid(), verdict.reason() + " in " + outcome.plan());
@@ -61,17 +61,24 @@ class PlanningRoundTripTest {
 	void unreachableGoalYieldsNoPlanNotAnException() {
 		State isolated = morning.toBuilder().retract(Atom.of("Building", "adj", morning.object("lobby").get(), morning.object("c4").get()))
 				.retract(Atom.of("Building", "adj", morning.object("c4").get(), morning.object("lobby").get())).build();
-		ModelPlanner.Outcome outcome = new ModelPlanner(hospital).plan("IsAt", List.of(morning.object("ward3").get()), isolated);
+		GoalSolver.Outcome outcome = new GoalSolver(hospital).plan("IsAt", List.of(morning.object("ward3").get()), isolated);
 		assertFalse(outcome.planned());
 		assertTrue(outcome.failure().startsWith("no plan"), outcome.failure());
 	}
 
-	@Test
-	void translatedHospitalPddlParses() {
-		var task = new ModelPlanner(hospital).translator().translate(morning, hospital.goal("Delivered").orElseThrow(),
-				new ModelGoal(hospital, "Delivered", List.of(morning.object("gauze").get(), morning.object("ward1").get())).binding());
-		var domain = PddlParser.parseDomain(task.domain(), "domain.pddl");
-		PddlParser.parseProblem(task.problem(), "problem.pddl");
-		assertEquals(6, domain.actions().size(), task.domain());
+	/** The planner gets the typed model directly; its text (triad pddl, external planners) must mean exactly the same. */
+	@ParameterizedTest
+	@CsvSource({ "IsAt,ward3,", "Holds,gauze,", "Delivered,gauze,ward1", "PersonAt,alice,xray", "FollowedTo,alice,ward2" })
+	void typedTranslationIsWhatItsTextParsesBackTo(String goal, String a, String b) {
+		List<Object> args = new ArrayList<>();
+		args.add(morning.object(a).orElseThrow());
+		if (b != null) {
+			args.add(morning.object(b).orElseThrow());
+		}
+		var task = new GoalSolver(hospital).translator().translate(morning, hospital.goal(goal).orElseThrow(),
+				new ModelGoal(hospital, goal, args).binding());
+		assertEquals(task.domain(), PddlParser.parseDomain(task.domainText(), "domain.pddl"), task.domainText());
+		assertEquals(task.problem(), PddlParser.parseProblem(task.problemText(), "problem.pddl"), task.problemText());
+		assertEquals(6, task.domain().actions().size(), task.domainText());
 	}
 }

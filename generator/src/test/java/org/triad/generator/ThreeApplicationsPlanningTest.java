@@ -16,7 +16,7 @@ import org.triad.dsl.app.LoadedApplication;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.ModelGoal;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.PlanChecker;
 
 /**
@@ -41,7 +41,7 @@ class ThreeApplicationsPlanningTest {
 	void goalIsPlannedAndThePlanChecks(String app, String situation, String goal, String args, int length) {
 		AppSchemaAndState s = load(app, situation);
 		List<Object> values = objects(s.state(), args);
-		ModelPlanner.Outcome outcome = new ModelPlanner(s.schema()).plan(goal, values, s.state());
+		GoalSolver.Outcome outcome = new GoalSolver(s.schema()).plan(goal, values, s.state());
 		assertNull(outcome.failure());
 		PlanChecker.Verdict verdict = new PlanChecker(s.schema()).check(s.state(), outcome.plan(), new ModelGoal(s.schema(), goal, values));
 		assertTrue(verdict.valid(), verdict.reason() + " " + outcome.plan());
@@ -60,7 +60,7 @@ class ThreeApplicationsPlanningTest {
 			state.values().keySet().stream().filter(a -> a.property().equals("adj") && a.args().contains(office)).forEach(b::retract);
 			state = b.build();
 		}
-		ModelPlanner.Outcome outcome = new ModelPlanner(s.schema()).plan(goal, objects(state, args), state);
+		GoalSolver.Outcome outcome = new GoalSolver(s.schema()).plan(goal, objects(state, args), state);
 		assertFalse(outcome.planned());
 		assertTrue(outcome.failure().startsWith("no plan"), outcome.failure());
 	}

@@ -14,7 +14,7 @@ import org.triad.pddl4j.Pddl4jPlanner;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.ModelGoal;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.PlanChecker;
 
 /**
@@ -40,8 +40,8 @@ class Pddl4jOnHospitalTest {
 		if (b != null) {
 			args.add(morning.object(b).orElseThrow());
 		}
-		ModelPlanner pddl4j = new ModelPlanner(hospital, new Pddl4jPlanner(), Duration.ofSeconds(30));
-		ModelPlanner.Outcome outcome = pddl4j.plan(goal, args, morning);
+		GoalSolver pddl4j = new GoalSolver(hospital, new Pddl4jPlanner(), Duration.ofSeconds(30));
+		GoalSolver.Outcome outcome = pddl4j.plan(goal, args, morning);
 		assertNull(outcome.failure());
 		PlanChecker.Verdict verdict = new PlanChecker(hospital).check(morning, outcome.plan(), new ModelGoal(hospital, goal, args));
 		assertTrue(verdict.valid(), verdict.reason());

@@ -21,7 +21,7 @@ import org.triad.runtime.app.State;
 import org.triad.runtime.component.DeterministicScheduler;
 import org.triad.runtime.component.Scheduler;
 import org.triad.runtime.schema.AppSchema;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.ModelTask;
 
 /**
@@ -44,7 +44,7 @@ class PlanVerifierExtensionTest {
 
 	/** A planner that drops the first action of its first {@code corruptions} plans. */
 	private static GoalPlanner corrupting(int corruptions) {
-		SchemaGoalPlanner real = new SchemaGoalPlanner(new ModelPlanner(hospital));
+		SchemaGoalPlanner real = new SchemaGoalPlanner(new GoalSolver(hospital));
 		AtomicInteger calls = new AtomicInteger();
 		return (goal, from) -> {
 			PlanningOutcome outcome = real.plan(goal, from);

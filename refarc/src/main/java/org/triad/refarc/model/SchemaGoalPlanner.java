@@ -2,21 +2,21 @@ package org.triad.refarc.model;
 
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.State;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.refarc.GoalPlanner;
 import org.triad.refarc.PlanningOutcome;
 
 /** The Planner behaviour for any application: its schema translated to PDDL and planned at runtime. */
 public final class SchemaGoalPlanner implements GoalPlanner {
-	private final ModelPlanner planner;
+	private final GoalSolver planner;
 
-	public SchemaGoalPlanner(ModelPlanner planner) {
+	public SchemaGoalPlanner(GoalSolver planner) {
 		this.planner = planner;
 	}
 
 	@Override
 	public PlanningOutcome plan(GoalInstance goal, State from) {
-		ModelPlanner.Outcome outcome = planner.plan(goal.name(), goal.args(), from);
+		GoalSolver.Outcome outcome = planner.plan(goal.name(), goal.args(), from);
 		return outcome.planned() ? new PlanningOutcome.Planned(outcome.plan()) : new PlanningOutcome.Failed(outcome.failure());
 	}
 }

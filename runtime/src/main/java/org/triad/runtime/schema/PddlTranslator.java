@@ -6,17 +6,25 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.stream.Collectors;
 
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.DomainObject;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
+import org.triad.planner.pddl.Action;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.PddlEffect;
+import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.pddl.PredicateDecl;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.pddl.TypedName;
 
 /**
  * Translates an application (its actors' properties and actions), a state and a goal into a PDDL
- * domain and problem, and plans back into actions. Boolean properties become predicates;
+ * domain and problem (the planner's typed model: no text on the way to Triad's engine; text only for
+ * {@code triad pddl} and planners outside the JVM), and plans back into actions. Boolean properties become predicates;
  * other properties predicates with a value argument whose previous value is deleted when assigned.
  * The translation stays within typed STRIPS with negative preconditions, equality and disjunction
  * (no {@code when}, no {@code exists}), so PDDL4J 3.8.3 and any STRIPS planner accept it: where a
@@ -31,24 +39,36 @@ public final class PddlTranslator {
 
 	/** A translated planning task, with what is needed to read plans back. */
 	public static final class Task {
-		private final String domain;
-		private final String problem;
+		private final Domain domain;
+		private final Problem problem;
 		private final PddlNames names;
 		private final Map<String, ActionSchema> actions;
 
-		Task(String domain, String problem, PddlNames names, Map<String, ActionSchema> actions) {
+		Task(Domain domain, Problem problem, PddlNames names, Map<String, ActionSchema> actions) {
 			this.domain = domain;
 			this.problem = problem;
 			this.names = names;
 			this.actions = actions;
 		}
 
-		public String domain() {
+		/** The domain as the planner takes it. */
+		public Domain domain() {
 			return domain;
 		}
 
-		public String problem() {
+		/** The problem as the planner takes it. */
+		public Problem problem() {
 			return problem;
+		}
+
+		/** The domain as PDDL text, for {@code triad pddl} and planners outside the JVM. */
+		public String domainText() {
+			return PddlWriter.write(domain);
+		}
+
+		/** The problem as PDDL text. */
+		public String problemText() {
+			return PddlWriter.write(problem);
 		}
 
 		/** A plan step read back: a PDDL action name and its arguments (extra parameters are dropped). */
@@ -88,88 +108,68 @@ public final class PddlTranslator {
 	public Task translate(State state, Expr goalCondition, Map<String, Object> binding, String goalName) {
 		PddlNames names = new PddlNames();
 		Set<String> domainConstants = new LinkedHashSet<>();
-		StringBuilder actionsText = new StringBuilder();
+		List<Action> pddlActions = new ArrayList<>();
 		Map<String, ActionSchema> actions = new LinkedHashMap<>();
 		Set<String> requirements = new LinkedHashSet<>(List.of(":strips", ":typing"));
 		for (ActionSchema a : schema.actions()) {
-			ActionTranslation t = new ActionTranslation(a, names, domainConstants, requirements);
-			actionsText.append(t.print());
+			pddlActions.add(new ActionTranslation(a, names, domainConstants, requirements).action());
 			actions.put(PddlNames.action(a.actor(), a.name()), a);
 		}
 		// objects of the state, then values the state uses
 		for (DomainObject o : state.objects().values()) {
 			names.value(o, o.typeName());
 		}
-		StringBuilder init = new StringBuilder();
+		List<Formula.Atom> init = new ArrayList<>();
 		for (Map.Entry<Atom, Object> e : state.values().entrySet()) {
 			Atom atom = e.getKey();
 			PropertySchema p = schema.property(atom.actor(), atom.property()).orElse(null);
 			if (p == null) {
 				continue; // a state may know more than the models ask about
 			}
-			StringBuilder fact = new StringBuilder("(").append(PddlNames.predicate(atom.actor(), atom.property()));
+			List<String> args = new ArrayList<>();
 			for (int i = 0; i < atom.args().size(); i++) {
-				fact.append(' ').append(names.value(atom.args().get(i), p.params().get(i).type()));
+				args.add(names.value(atom.args().get(i), p.params().get(i).type()));
 			}
 			if (!p.isBoolean()) {
-				fact.append(' ').append(names.value(e.getValue(), p.type()));
+				args.add(names.value(e.getValue(), p.type()));
 			}
-			init.append("    ").append(fact).append(")\n");
+			init.add(new Formula.Atom(PddlNames.predicate(atom.actor(), atom.property()), args));
 		}
-		GroundTranslation g = new GroundTranslation(names, binding, requirements);
-		String goalText = g.formula(goalCondition);
+		Formula goal = new GroundTranslation(names, binding, requirements).formula(goalCondition);
 
-		Set<String> types = new LinkedHashSet<>();
-		StringBuilder typesText = new StringBuilder();
+		List<TypedName> types = new ArrayList<>();
 		for (TypeSchema t : schema.types().values()) {
-			typesText.append("    ").append(PddlNames.type(t.name())).append(" - ")
-					.append(t.superType() == null ? "object" : PddlNames.type(t.superType())).append('\n');
-			types.add(t.name());
+			types.add(TypedName.of(PddlNames.type(t.name()), t.superType() == null ? "object" : PddlNames.type(t.superType())));
 		}
 		for (String used : usedPrimitiveTypes(names)) {
-			typesText.append("    ").append(PddlNames.type(used)).append(" - object\n");
+			types.add(TypedName.of(PddlNames.type(used), "object"));
 		}
-		StringBuilder predicates = new StringBuilder();
+		List<PredicateDecl> predicates = new ArrayList<>();
 		for (PropertySchema p : schema.properties()) {
-			predicates.append("    (").append(PddlNames.predicate(p.actor(), p.name()));
+			List<TypedName> params = new ArrayList<>();
 			for (Param param : p.params()) {
-				predicates.append(' ').append(PddlNames.variable(param.name())).append(" - ").append(PddlNames.type(param.type()));
+				params.add(TypedName.of(PddlNames.variable(param.name()), PddlNames.type(param.type())));
 			}
 			if (!p.isBoolean()) {
-				predicates.append(" ?value - ").append(PddlNames.type(p.type()));
+				params.add(TypedName.of("?value", PddlNames.type(p.type())));
 			}
-			predicates.append(")\n");
+			predicates.add(new PredicateDecl(PddlNames.predicate(p.actor(), p.name()), params));
 		}
-		String domainName = PddlNames.lower(schema.name() == null ? "application" : schema.name()).replaceAll("[^a-z0-9-]", "-");
-		StringBuilder domain = new StringBuilder();
-		domain.append("(define (domain ").append(domainName).append(")\n");
-		domain.append("  (:requirements ").append(String.join(" ", requirements)).append(")\n");
-		domain.append("  (:types\n").append(typesText).append("  )\n");
-		if (!domainConstants.isEmpty()) {
-			domain.append("  (:constants\n");
-			for (String c : domainConstants) {
-				domain.append("    ").append(c).append(" - ").append(PddlNames.type(names.objectsWithTypes().get(c))).append('\n');
-			}
-			domain.append("  )\n");
+		List<TypedName> constants = new ArrayList<>();
+		for (String c : domainConstants) {
+			constants.add(TypedName.of(c, PddlNames.type(names.objectsWithTypes().get(c))));
 		}
-		domain.append("  (:predicates\n").append(predicates).append("  )\n");
-		domain.append(actionsText);
-		domain.append(")\n");
-
-		StringBuilder problem = new StringBuilder();
-		problem.append("(define (problem ").append(PddlNames.lower(goalName).replaceAll("[^a-z0-9-]", "-")).append(")\n");
-		problem.append("  (:domain ").append(domainName).append(")\n");
-		problem.append("  (:objects\n");
+		List<TypedName> objects = new ArrayList<>();
 		for (Map.Entry<String, String> o : names.objectsWithTypes().entrySet()) {
 			if (!domainConstants.contains(o.getKey())) {
-				problem.append("    ").append(o.getKey()).append(" - ").append(PddlNames.type(o.getValue())).append('\n');
+				objects.add(TypedName.of(o.getKey(), PddlNames.type(o.getValue())));
 			}
 		}
-		problem.append("  )\n");
-		problem.append("  (:init\n").append(init).append("  )\n");
-		problem.append("  (:goal ").append(goalText).append(")\n");
-		problem.append(")\n");
-		return new Task(domain.toString(), problem.toString(), names, actions);
+		String domainName = PddlNames.lower(schema.name() == null ? "application" : schema.name()).replaceAll("[^a-z0-9-]", "-");
+		Domain domain = new Domain(domainName, List.copyOf(requirements), types, constants, predicates, List.of(), pddlActions);
+		Problem problem = new Problem(PddlNames.lower(goalName).replaceAll("[^a-z0-9-]", "-"), domainName, objects, init, List.of(), goal,
+				null);
+		return new Task(domain, problem, names, actions);
 	}
 
 	private static Set<String> usedPrimitiveTypes(PddlNames names) {
@@ -194,18 +194,18 @@ public final class PddlTranslator {
 
 		abstract String term(Expr e);
 
-		String formula(Expr e) {
+		Formula formula(Expr e) {
 			if (e instanceof Expr.And) {
-				List<String> parts = Exprs.conjuncts(e).stream().map(this::formula).toList();
-				return parts.size() == 1 ? parts.get(0) : "(and " + String.join(" ", parts) + ")";
+				List<Formula> parts = Exprs.conjuncts(e).stream().map(this::formula).toList();
+				return parts.size() == 1 ? parts.get(0) : new Formula.And(parts);
 			}
 			if (e instanceof Expr.Or o) {
 				requirements.add(":disjunctive-preconditions");
-				return "(or " + formula(o.left()) + " " + formula(o.right()) + ")";
+				return new Formula.Or(List.of(formula(o.left()), formula(o.right())));
 			}
 			if (e instanceof Expr.Not n) {
 				requirements.add(":negative-preconditions");
-				return "(not " + formula(n.operand()) + ")";
+				return new Formula.Not(formula(n.operand()));
 			}
 			if (e instanceof Expr.Call c) {
 				PropertySchema p = property(c);
@@ -216,22 +216,22 @@ public final class PddlTranslator {
 			}
 			if (e instanceof Expr.Compare c) {
 				if (c.op() == Expr.Op.EQ || c.op() == Expr.Op.NE) {
-					String eq = equality(c.left(), c.right());
+					Formula eq = equality(c.left(), c.right());
 					if (c.op() == Expr.Op.NE) {
 						requirements.add(":negative-preconditions");
-						return "(not " + eq + ")";
+						return new Formula.Not(eq);
 					}
 					return eq;
 				}
 				throw new PddlTranslationException("'" + c.op().symbol + "' on numbers cannot be planned with STRIPS: " + Exprs.show(c));
 			}
 			if (e instanceof Expr.Lit l && l.value() instanceof Boolean b) {
-				return b ? "(and)" : "(or)";
+				return b ? new Formula.And(List.of()) : new Formula.Or(List.of());
 			}
 			throw new PddlTranslationException(Exprs.show(e) + " is not a condition");
 		}
 
-		String equality(Expr l, Expr r) {
+		Formula equality(Expr l, Expr r) {
 			if (isFunction(l) && !isFunction(r)) {
 				return atom((Expr.Call) l, term(r));
 			}
@@ -239,18 +239,18 @@ public final class PddlTranslator {
 				return atom((Expr.Call) r, term(l));
 			}
 			requirements.add(":equality");
-			return "(= " + term(l) + " " + term(r) + ")";
+			return new Formula.Equals(term(l), term(r));
 		}
 
-		String atom(Expr.Call c, String value) {
-			StringBuilder b = new StringBuilder("(").append(PddlNames.predicate(c.actor(), c.property()));
+		Formula.Atom atom(Expr.Call c, String value) {
+			List<String> args = new ArrayList<>();
 			for (Expr a : c.args()) {
-				b.append(' ').append(term(a));
+				args.add(term(a));
 			}
 			if (value != null) {
-				b.append(' ').append(value);
+				args.add(value);
 			}
-			return b.append(')').toString();
+			return new Formula.Atom(PddlNames.predicate(c.actor(), c.property()), args);
 		}
 
 		boolean isFunction(Expr e) {
@@ -274,7 +274,7 @@ public final class PddlTranslator {
 		private final List<String> params = new ArrayList<>();
 		private final Map<String, String> paramTypes = new LinkedHashMap<>();
 		private final Map<String, String> valueOfCall = new LinkedHashMap<>();
-		private final List<String> readPre = new ArrayList<>();
+		private final List<Formula> readPre = new ArrayList<>();
 		private int fresh;
 
 		ActionTranslation(ActionSchema action, PddlNames names, Set<String> domainConstants, Set<String> requirements) {
@@ -287,9 +287,8 @@ public final class PddlTranslator {
 			}
 		}
 
-		String print() {
+		Action action() {
 			// a top-level conjunct 'f(args) == v' names f's current value, which effects may delete
-			List<String> pre = new ArrayList<>();
 			for (Expr c : Exprs.conjuncts(action.pre())) {
 				if (c instanceof Expr.Compare cmp && cmp.op() == Expr.Op.EQ && isFunction(cmp.left()) && !isFunction(cmp.right())) {
 					String v = term(cmp.right());
@@ -298,31 +297,27 @@ public final class PddlTranslator {
 					valueOfCall.putIfAbsent(key((Expr.Call) cmp.right()), term(cmp.left()));
 				}
 			}
+			List<Formula> pre = new ArrayList<>();
 			for (Expr c : Exprs.conjuncts(action.pre())) {
 				pre.add(formula(c));
 			}
-			List<String> effects = new ArrayList<>();
+			List<PddlEffect> effects = new ArrayList<>();
 			for (Effect e : action.effects()) {
 				if (e.isAssignment()) {
 					String value = term(e.value());
 					String old = currentValue(e.call());
 					if (!old.equals(value)) {
-						effects.add("(not " + atom(e.call(), old) + ")");
+						effects.add(new PddlEffect.Delete(atom(e.call(), old)));
 					}
-					effects.add(atom(e.call(), value));
+					effects.add(new PddlEffect.Add(atom(e.call(), value)));
 				} else {
-					effects.add(e.holds() ? atom(e.call(), null) : "(not " + atom(e.call(), null) + ")");
+					effects.add(e.holds() ? new PddlEffect.Add(atom(e.call(), null)) : new PddlEffect.Delete(atom(e.call(), null)));
 				}
 			}
-			List<String> allPre = new ArrayList<>(readPre);
+			List<Formula> allPre = new ArrayList<>(readPre);
 			allPre.addAll(pre);
-			StringBuilder b = new StringBuilder();
-			b.append("  (:action ").append(PddlNames.action(action.actor(), action.name())).append('\n');
-			b.append("    :parameters (").append(params.stream().map(p -> p + " - " + paramTypes.get(p)).collect(Collectors.joining(" ")))
-					.append(")\n");
-			b.append("    :precondition ").append(allPre.isEmpty() ? "(and)" : "(and " + String.join(" ", allPre) + ")").append('\n');
-			b.append("    :effect ").append(effects.isEmpty() ? "(and)" : "(and " + String.join(" ", effects) + ")").append(")\n");
-			return b.toString();
+			List<TypedName> parameters = params.stream().map(p -> TypedName.of(p, paramTypes.get(p))).toList();
+			return new Action(PddlNames.action(action.actor(), action.name()), parameters, new Formula.And(allPre), effects);
 		}
 
 		/** The term for the value a function call has before the action, binding a fresh parameter if needed. */
@@ -341,11 +336,7 @@ public final class PddlTranslator {
 		}
 
 		private String key(Expr.Call call) {
-			StringBuilder b = new StringBuilder(PddlNames.predicate(call.actor(), call.property()));
-			for (Expr a : call.args()) {
-				b.append(' ').append(term(a));
-			}
-			return b.toString();
+			return PddlWriter.atom(atom(call, null));
 		}
 
 		@Override

@@ -11,7 +11,7 @@ import org.triad.refarc.RefArcRunner;
 import org.triad.refarc.Status;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.TaskInstance;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.sim.GifReplay;
 import org.triad.sim.HtmlReplay;
 import org.triad.sim.PersonSpec;
@@ -95,7 +95,7 @@ public final class HospitalSimulation {
         Objects.requireNonNull(task, "task");
         Objects.requireNonNull(progress, "progress");
         RefArcRunner runner = new RefArcRunner(new HospitalStateProvider(courier, building),
-                new SchemaGoalPlanner(new ModelPlanner(HospitalSchema.SCHEMA)), new HospitalActionExecutor(courier, building));
+                new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), new HospitalActionExecutor(courier, building));
         double simStart = sim.time();
         int logStart = log.entries().size();
         long wallStart = System.nanoTime();

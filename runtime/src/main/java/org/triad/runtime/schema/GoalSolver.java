@@ -6,28 +6,29 @@ import java.util.Map;
 
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
-import org.triad.planner.pddl.PddlParser;
 import org.triad.planner.PddlStep;
 import org.triad.planner.SolveResult;
 import org.triad.planner.PddlPlanner;
 import org.triad.planner.TriadEngine;
 
 /**
- * Plans a goal of an application from a state: translates to PDDL, runs the configured planner,
- * reads the plan back into the application's actions. Failures are results with a reason, never
- * exceptions.
+ * Solves a goal of an application from a state: the bridge from goals to PDDL to plans. Translates
+ * the goal to the planner's typed PDDL model ({@link PddlTranslator}), runs the configured
+ * {@link PddlPlanner}, reads the plan back into the application's actions. Failures are results with
+ * a reason, never exceptions. (RefArc's Planner component plans through it, see
+ * {@code refarc.model.SchemaGoalPlanner}.)
  */
-public final class ModelPlanner {
+public final class GoalSolver {
 	private final AppSchema schema;
 	private final PddlTranslator translator;
 	private final PddlPlanner planner;
 	private final Duration timeout;
 
-	public ModelPlanner(AppSchema schema) {
+	public GoalSolver(AppSchema schema) {
 		this(schema, new TriadEngine(), Duration.ofSeconds(30));
 	}
 
-	public ModelPlanner(AppSchema schema, PddlPlanner planner, Duration timeout) {
+	public GoalSolver(AppSchema schema, PddlPlanner planner, Duration timeout) {
 		this.schema = schema;
 		this.translator = new PddlTranslator(schema);
 		this.planner = planner;
@@ -53,8 +54,7 @@ public final class ModelPlanner {
 	public Outcome plan(GoalSchema goal, Map<String, Object> binding, State from) {
 		try {
 			PddlTranslator.Task task = translator.translate(from, goal, binding);
-			SolveResult result = planner.solve(PddlParser.parseDomain(task.domain(), "domain.pddl"),
-					PddlParser.parseProblem(task.problem(), "problem.pddl"), timeout);
+			SolveResult result = planner.solve(task.domain(), task.problem(), timeout);
 			if (!result.isSolved()) {
 				return new Outcome(null, switch (result.status()) {
 					case UNSOLVABLE -> "no plan: " + (result.message().isEmpty() ? "the goal is unreachable" : result.message());
