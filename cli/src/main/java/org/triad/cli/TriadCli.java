@@ -28,6 +28,8 @@ public final class TriadCli implements Runnable {
 		CommandLine cl = new CommandLine(new TriadCli());
 		cl.setOut(out);
 		cl.setErr(err);
+		// the demo's options belong to the application's demo, which parses them
+		cl.getSubcommands().get("demo").setUnmatchedOptionsArePositionalParams(true);
 		cl.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
 			commandLine.getErr().println("triad " + commandLine.getCommandName() + ": " + describe(ex));
 			return 2;

@@ -1,4 +1,4 @@
-package org.triad.cli;
+package org.triad.examples.hospital;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -13,14 +13,14 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code triad demo}: the delivery in the simulated hospital, with progress lines and pictures. */
-class DemoCommandTest {
+/** The hospital demo ({@code ./triad demo}): the delivery in the simulated hospital, with progress lines and pictures. */
+class HospitalDemoTest {
 
 	@Test
 	void theDemoDeliversTheGauzePrintingProgressAndWritesPictures(@TempDir Path dir) throws Exception {
 		StringWriter out = new StringWriter();
 		StringWriter err = new StringWriter();
-		int code = TriadCli.execute(new String[] { "demo", "-o", dir.toString(), "--close-fire-door-at", "43" }, new PrintWriter(out, true),
+		int code = HospitalDemo.run(new String[] { "-o", dir.toString(), "--close-fire-door-at", "43" }, new PrintWriter(out, true),
 				new PrintWriter(err, true));
 		List<String> lines = Arrays.asList(out.toString().split("\\R"));
 		assertEquals(0, code, out + err.toString());
@@ -39,7 +39,7 @@ class DemoCommandTest {
 	void aNegativeDoorTimeIsAUserError() {
 		StringWriter out = new StringWriter();
 		StringWriter err = new StringWriter();
-		int code = TriadCli.execute(new String[] { "demo", "--close-fire-door-at", "-5" }, new PrintWriter(out, true), new PrintWriter(err, true));
+		int code = HospitalDemo.run(new String[] { "--close-fire-door-at", "-5" }, new PrintWriter(out, true), new PrintWriter(err, true));
 		assertEquals(2, code);
 		assertEquals("triad demo: --close-fire-door-at takes a time in seconds >= 0, not -5.0", err.toString().strip());
 	}
