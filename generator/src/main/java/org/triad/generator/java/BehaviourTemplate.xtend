@@ -13,7 +13,8 @@ import org.triad.dsl.typing.TriadTypeSystem
 /**
  * The generated behaviours of RefArc's application-specific components: the state provider, which
  * observes the world through {@code IRobot} and {@code IWorld}, and the action executor, which
- * checks preconditions against the schema and calls the actions' methods.
+ * checks preconditions against the schema and calls the actions' methods through a typed
+ * {@code ActionTable} (runtime library) built once from the schema.
  */
 class BehaviourTemplate {
 	val TriadNames names
@@ -145,18 +146,27 @@ class BehaviourTemplate {
 		val string = im.ref("java.lang.String")
 		val object = im.ref("java.lang.Object")
 		val groundAction = im.ref("org.triad.runtime.app.GroundAction")
-		val iae = im.ref("java.lang.IllegalArgumentException")
 		'''
 			/**
 			 * Executes actions: checks a precondition against a state with the application schema, and runs an action by
-			 * calling its method on {@code «names.robotInterface»} or {@code «names.worldInterface»}. Generated: do not edit.
+			 * calling its method on {@code «names.robotInterface»} or {@code «names.worldInterface»} through a table of typed
+			 * method references built once. Generated: do not edit.
 			 */
 			public class «names.actionExecutorClass» implements «im.ref("org.triad.refarc.ActionRunner")» {
 				«fields(im)»
 				private final «im.ref("org.triad.runtime.schema.Transitions")» «names.transitionsField» = new «im.ref("org.triad.runtime.schema.Transitions")»(«im.ref(names.qualifiedSchemaClass)».«names.schemaField»);
 
+				private final «im.ref("org.triad.runtime.schema.ActionTable")» «names.actionTableField»;
+
 				public «names.actionExecutorClass»(«im.ref(names.qualifiedRobotInterface)» «names.robotField», «im.ref(names.qualifiedWorldInterface)» «names.worldField») {
 					«fieldAssignments(im)»
+					this.«names.actionTableField» = «im.ref("org.triad.runtime.schema.ActionTable")».builder(«im.ref(names.qualifiedSchemaClass)».«names.schemaField»)
+						«FOR a : actors»
+							«FOR act : a.actions»
+								«actionEntry(a, act, im)»
+							«ENDFOR»
+						«ENDFOR»
+						.build();
 				}
 
 				/** The first conjunct of the action's precondition that does not hold in {@code now}. */
@@ -172,17 +182,10 @@ class BehaviourTemplate {
 					return «im.ref("java.util.Optional")».empty();
 				}
 
+				/** Runs the action's method through the typed table built from the schema. */
 				@«im.ref("java.lang.Override")»
 				public boolean execute(«groundAction» «names.actionParameter») {
-					this.«names.transitionsField».schemaOf(«names.actionParameter»);
-					return switch («names.actionParameter».actor() + "." + «names.actionParameter».action()) {
-						«FOR a : actors»
-							«FOR act : a.actions»
-								«actionCall(a, act, im)»
-							«ENDFOR»
-						«ENDFOR»
-						default -> throw new «iae»("no method for action " + «names.actionParameter»);
-					};
+					return this.«names.actionTableField».execute(«names.actionParameter»);
 				}
 
 				@«im.ref("java.lang.Override")»
@@ -190,69 +193,32 @@ class BehaviourTemplate {
 					«im.ref("java.lang.Object")» «names.actorVariable» = «FOR a : actors SEPARATOR ' : '»«names.actionParameter».actor().equals(«JavaLiterals.string(a.name)») ? this.«actorField(a)»«ENDFOR» : null;
 					return «names.actorVariable» instanceof «im.ref("org.triad.runtime.app.FailureExplaining")» «names.explainingVariable» ? «names.explainingVariable».lastFailure() : «im.ref("java.util.Optional")».empty();
 				}
-
-				«argumentHelpers(actors, im)»
 			}
 		'''
 	}
 
-	/** The executor's argument conversions; the double and enum ones only where an action needs them. */
-	private def String argumentHelpers(List<Actor> actors, Imports im) {
-		val kinds = actors.flatMap[actions].flatMap[parameters].map[TriadTypeSystem.typeOf(type).kind].toSet
-		val groundAction = im.ref("org.triad.runtime.app.GroundAction")
-		val object = im.ref("java.lang.Object")
-		val cls = im.ref("java.lang.Class")
-		val action = names.actionParameter
-		'''
-			private static <T> T «names.argumentMethod»(«groundAction» «action», int i, «cls»<T> type) {
-				«object» value = «action».args().get(i);
-				if (!type.isInstance(value)) {
-					throw new «im.ref("java.lang.IllegalArgumentException")»("argument " + (i + 1) + " of " + «action» + " is not a " + type.getSimpleName() + ": " + «names.describeValueMethod»(value));
-				}
-				return type.cast(value);
-			}
-			«IF kinds.contains(TriadType.Kind.DOUBLE)»
-
-				private static double «names.doubleArgumentMethod»(«groundAction» «action», int i) {
-					return «names.argumentMethod»(«action», i, «im.ref("java.lang.Number")».class).doubleValue();
-				}
-			«ENDIF»
-			«IF kinds.contains(TriadType.Kind.ENUM)»
-
-				private static <E extends «im.ref("java.lang.Enum")»<E>> E «names.enumArgumentMethod»(«groundAction» «action», int i, «cls»<E> type, «im.ref("java.lang.String")» enumeration) {
-					«object» value = «action».args().get(i);
-					if (value instanceof «im.ref("org.triad.runtime.app.EnumValue")» e && e.enumeration().equals(enumeration)) {
-						for (E constant : type.getEnumConstants()) {
-							if (constant.name().equals(e.literal())) {
-								return constant;
-							}
-						}
-					}
-					return «names.argumentMethod»(«action», i, type);
-				}
-			«ENDIF»
-
-			private static «im.ref("java.lang.String")» «names.describeValueMethod»(«object» value) {
-				return value == null ? "null" : value + " (" + value.getClass().getName() + ")";
-			}
-		'''
+	/**
+	 * An action's entry in the executor's table: a method reference with the parameters' Java types, so
+	 * that the table and {@code IRobot}/{@code IWorld} agree at compile time (a lambda over typed
+	 * arguments beyond six parameters).
+	 */
+	def String actionEntry(Actor a, Action act, Imports im) {
+		val target = '''this.«actorField(a)»'''
+		val head = '''«JavaLiterals.string(a.name)», «JavaLiterals.string(act.name)»'''
+		if (act.parameters.size <= 6)
+			'''.action(«head»«FOR p : act.parameters», «argumentClass(p, im)»«ENDFOR», «target»::«names.actionMethod(act)»)'''
+		else
+			'''.action(«head», «act.parameters.size», «names.argumentsVariable» -> «target».«names.actionMethod(act)»(«act.parameters.indexed.map[names.argumentsVariable + '.get(' + key + ', ' + argumentClass(value, im) + ')'].join(', ')»))'''
 	}
 
-	/** An action: dispatched to its method, with the arguments converted to their Java types. */
-	def String actionCall(Actor a, Action act, Imports im) '''
-		case «JavaLiterals.string(a.name + "." + act.name)» -> this.«actorField(a)».«names.actionMethod(act)»(«act.parameters.indexed.map[argument(value, key, im)].join(', ')»);
-	'''
-
-	private def String argument(Parameter p, int i, Imports im) {
+	private def String argumentClass(Parameter p, Imports im) {
 		val t = TriadTypeSystem.typeOf(p.type)
-		val action = names.actionParameter
 		switch (t.kind) {
-			case BOOLEAN: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.Boolean")».class)'''
-			case INT: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.Integer")».class)'''
-			case DOUBLE: '''«names.doubleArgumentMethod»(«action», «i»)'''
-			case STRING: '''«names.argumentMethod»(«action», «i», «im.ref("java.lang.String")».class)'''
-			case ENUM: '''«names.enumArgumentMethod»(«action», «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class, «JavaLiterals.string(t.domainType.name)»)'''
-			default: '''«names.argumentMethod»(«action», «i», «im.ref(names.qualifiedDomainClass(t.domainType))».class)'''
+			case BOOLEAN: '''«im.ref("java.lang.Boolean")».class'''
+			case INT: '''«im.ref("java.lang.Integer")».class'''
+			case DOUBLE: '''«im.ref("java.lang.Double")».class'''
+			case STRING: '''«im.ref("java.lang.String")».class'''
+			default: '''«im.ref(names.qualifiedDomainClass(t.domainType))».class'''
 		}
 	}
 

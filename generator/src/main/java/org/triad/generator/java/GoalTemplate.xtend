@@ -43,11 +43,13 @@ class GoalTemplate {
 				«FOR p : g.parameters»
 					«parameterField(p, im)»
 				«ENDFOR»
+				private final «im.ref("java.util.Map")»<«string», «object»> «names.goalBindingField»;
 
 				public «cls»(«constructorParameters(g.parameters, im)») {
 					«FOR p : g.parameters»
 						«parameterAssignment(p, im)»
 					«ENDFOR»
+					this.«names.goalBindingField» = «im.ref("java.util.Map")».ofEntries(«FOR p : g.parameters SEPARATOR ', '»«im.ref("java.util.Map")».entry(«JavaLiterals.string(p.name)», this.«names.goalField(p)»)«ENDFOR»);
 				}
 				«FOR p : g.parameters»
 
@@ -66,11 +68,7 @@ class GoalTemplate {
 
 				@«override»
 				public boolean isSatisfiedIn(«im.ref("org.triad.runtime.app.State")» «names.stateParameter») {
-					«im.ref("java.util.Map")»<«string», «object»> «names.bindingVariable» = new «im.ref("java.util.LinkedHashMap")»<>();
-					«FOR p : g.parameters»
-						«names.bindingVariable».put(«JavaLiterals.string(p.name)», this.«names.goalField(p)»);
-					«ENDFOR»
-					return «names.evaluatorConstant».holds(«names.conditionConstant», «names.stateParameter», «names.bindingVariable»);
+					return «names.evaluatorConstant».holds(«names.conditionConstant», «names.stateParameter», this.«names.goalBindingField»);
 				}
 
 				@«override»

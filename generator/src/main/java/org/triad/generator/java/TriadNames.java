@@ -33,7 +33,7 @@ public final class TriadNames {
 	private static final Set<String> OBJECT_MEMBERS = Set.of("getClass", "hashCode", "equals", "toString", "clone", "finalize",
 			"notify", "notifyAll", "wait");
 	/** Members of the generated goal and task classes besides the model's parameters. */
-	private static final Set<String> INSTANCE_MEMBERS = Set.of("name", "args", "goals", "describe", "isSatisfiedIn",
+	private static final Set<String> INSTANCE_MEMBERS = Set.of("name", "args", "goals", "describe", "isSatisfiedIn", "binding",
 			"CONDITION", "EVALUATOR", "NAME");
 
 	private final Application app;
@@ -313,6 +313,21 @@ public final class TriadNames {
 		return "binding";
 	}
 
+	/** The executor's table of typed method references, one per action. */
+	public String actionTableField() {
+		return "actions";
+	}
+
+	/** The typed arguments of an action with more than six parameters. */
+	public String argumentsVariable() {
+		return "args";
+	}
+
+	/** A goal's parameters by name, bound once when the goal is made. */
+	public String goalBindingField() {
+		return "binding";
+	}
+
 	public String transitionsField() {
 		return "transitions";
 	}
@@ -352,23 +367,6 @@ public final class TriadNames {
 	/** The state provider's helper selecting the objects of a class. */
 	public String ofTypeMethod() {
 		return "ofType";
-	}
-
-	/** The action executor's helpers converting an argument to a parameter's Java type. */
-	public String argumentMethod() {
-		return "arg";
-	}
-
-	public String doubleArgumentMethod() {
-		return "doubleArg";
-	}
-
-	public String enumArgumentMethod() {
-		return "enumArg";
-	}
-
-	public String describeValueMethod() {
-		return "describe";
 	}
 
 	// ---- rules -------------------------------------------------------------------------------
