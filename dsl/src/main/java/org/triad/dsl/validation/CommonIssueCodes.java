@@ -41,12 +41,8 @@ public final class CommonIssueCodes {
 	public static final String DUPLICATE_PARAMETER = "common.duplicate-parameter";
 	/** Two elements of the application (class diagrams, actors, goals, tasks, situations) with the same name. */
 	public static final String DUPLICATE_NAME = "app.duplicate-name";
-	/**
-	 * No longer reported: replaced by {@link #CLASS_DIAGRAM_COUNT}, {@link #ROBOT_COUNT} and
-	 * {@link #WORLD_COUNT}, one code per rule of {@link org.triad.dsl.app.ApplicationStructure}.
-	 */
-	@Deprecated
-	public static final String APPLICATION_STRUCTURE = "app.structure";
+	// "app.structure" (retired, never to be reused) became CLASS_DIAGRAM_COUNT, ROBOT_COUNT and WORLD_COUNT,
+	// one code per rule of org.triad.dsl.app.ApplicationStructure.
 	/** An application without a class diagram or with more than one (the class diagram names the application). */
 	public static final String CLASS_DIAGRAM_COUNT = "app.class-diagram-count";
 	/** An application without a robot actor (several robots: {@link ActorIssueCodes#DUPLICATE_KIND}). */
