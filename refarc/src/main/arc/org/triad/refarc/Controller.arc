@@ -1,8 +1,7 @@
-package refarc;
+package org.triad.refarc;
 
 import org.triad.runtime.app.TaskInstance;
 import org.triad.runtime.component.ComponentFault;
-import org.triad.refarc.*;
 
 /* Behaviour is hand-written in org.triad.refarc.Controller (TOP pattern: generated ControllerTOP). */
 component Controller {

@@ -1,7 +1,6 @@
-package refarc;
+package org.triad.refarc;
 
 import org.triad.runtime.app.TaskInstance;
-import org.triad.refarc.*;
 
 /*
  * The reference architecture (Fig. 3 of the paper): tasks in, status out. The Java class

@@ -1,6 +1,5 @@
-package refarc;
+package org.triad.refarc;
 
-import org.triad.refarc.*;
 
 /* Behaviour is hand-written in org.triad.refarc.StateProvider (TOP pattern: generated StateProviderTOP).
    One query/answer pair per client, because an in port has one sender. */

@@ -1,10 +1,7 @@
-package examples.hospital;
+package org.triad.examples.hospital;
 
 import org.triad.runtime.app.TaskInstance;
 import org.triad.refarc.*;
-import refarc.OpenRefArc;
-import refarc.PlanVerifier;
-import refarc.RemoteOperator;
 
 /*
  * The hospital application's architecture: RefArc, extended without touching it. A plan verifier

@@ -1,6 +1,5 @@
-package refarc;
+package org.triad.refarc;
 
-import org.triad.refarc.*;
 
 /* Extension: behaviour in org.triad.refarc.RemoteOperator (TOP pattern: generated RemoteOperatorTOP). */
 component RemoteOperator {

@@ -1,6 +1,5 @@
-package refarc;
+package org.triad.refarc;
 
-import org.triad.refarc.*;
 
 /* Behaviour is hand-written in org.triad.refarc.ActionExecutor (TOP pattern: generated ActionExecutorTOP). */
 component ActionExecutor(ActionRunner actionRunner) {

@@ -1,4 +1,4 @@
-package org.triad.dsl.arc;
+package org.triad.generator.arc;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -25,7 +25,6 @@ import javax.tools.ToolProvider;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.arc.generator.ArcGeneratorMain;
 import org.triad.dsl.validation.ArcIssueCodes;
 
 /**
@@ -118,7 +117,7 @@ class ArcGeneratorTest {
 		Path models = work.resolve("models");
 		write(models, MODELS);
 		Path src = work.resolve("src");
-		List<Path> generated = ArcGeneratorMain.generate(models, src, "");
+		List<Path> generated = ArcJavaGenerator.generate(models, src, HandwrittenCode.NONE, List.of());
 		assertEquals(List.of("app/Pipeline.java", "demo/BatcherTOP.java", "demo/ScalerTOP.java"),
 				generated.stream().map(p -> src.relativize(p).toString().replace(File.separatorChar, '/')).sorted().toList());
 		assertTrue(Files.readString(src.resolve("demo/ScalerTOP.java")).contains("<p>Multiplies by its factor."), "model comment as javadoc");
@@ -137,7 +136,7 @@ class ArcGeneratorTest {
 		write(models, Map.of("Broken.arc", "package demo;\ncomponent Broken {\n  Missing part;\n}\n"));
 		Path out = Files.createDirectories(work.resolve("out"));
 		Files.writeString(out.resolve("Stale.java"), "class Stale {}");
-		IllegalStateException e = assertThrows(IllegalStateException.class, () -> ArcGeneratorMain.generate(models, out, ""));
+		IllegalStateException e = assertThrows(IllegalStateException.class, () -> ArcJavaGenerator.generate(models, out, HandwrittenCode.NONE, List.of()));
 		assertTrue(e.getMessage().contains("Broken.arc:3:3: error " + ArcIssueCodes.UNKNOWN_COMPONENT + ": unknown component type 'Missing'"),
 				e.getMessage());
 	}
@@ -148,12 +147,12 @@ class ArcGeneratorTest {
 		write(models, Map.of("demo/Batcher.arc", MODELS.get("demo/Batcher.arc")));
 		Path out = Files.createDirectories(work.resolve("out/old"));
 		Files.writeString(out.resolve("Stale.java"), "class Stale {}");
-		ArcGeneratorMain.generate(models, work.resolve("out"), "org.example");
-		assertTrue(Files.exists(work.resolve("out/org/example/demo/BatcherTOP.java")));
+		ArcJavaGenerator.generate(models, work.resolve("out"), HandwrittenCode.NONE, List.of());
+		assertTrue(Files.exists(work.resolve("out/demo/BatcherTOP.java")));
 		assertTrue(Files.notExists(out.resolve("Stale.java")));
 	}
 
-	private static void write(Path root, Map<String, String> files) throws Exception {
+	static void write(Path root, Map<String, String> files) throws Exception {
 		for (Map.Entry<String, String> f : files.entrySet()) {
 			Path p = root.resolve(f.getKey());
 			Files.createDirectories(p.getParent());
@@ -161,7 +160,7 @@ class ArcGeneratorTest {
 		}
 	}
 
-	private static void compile(Path src, Path classes) throws Exception {
+	static void compile(Path src, Path classes) throws Exception {
 		List<File> sources = new ArrayList<>();
 		try (var walk = Files.walk(src)) {
 			walk.filter(p -> p.toString().endsWith(".java")).forEach(p -> sources.add(p.toFile()));

@@ -1,6 +1,5 @@
-package refarc;
+package org.triad.refarc;
 
-import org.triad.refarc.*;
 
 /* Behaviour is hand-written in org.triad.refarc.Planner (TOP pattern: generated PlannerTOP). */
 component Planner(GoalPlanner goalPlanner) {

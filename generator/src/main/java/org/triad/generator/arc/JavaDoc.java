@@ -1,4 +1,4 @@
-package org.triad.dsl.arc.generator;
+package org.triad.generator.arc;
 
 /** Model comments carried into generated javadoc. */
 final class JavaDoc {

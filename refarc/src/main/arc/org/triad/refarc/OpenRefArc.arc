@@ -1,7 +1,6 @@
-package refarc;
+package org.triad.refarc;
 
 import org.triad.runtime.app.TaskInstance;
-import org.triad.refarc.*;
 
 /*
  * RefArc with the Planner-to-Controller connection exposed as two ports: the Planner's results

@@ -1,6 +1,5 @@
-package refarc;
+package org.triad.refarc;
 
-import org.triad.refarc.*;
 
 /* Extension: behaviour in org.triad.refarc.PlanVerifier (TOP pattern: generated PlanVerifierTOP). */
 component PlanVerifier(PlanCheck check) {
