@@ -41,11 +41,13 @@ public final class DemoCommand implements Callable<Integer> {
 	@Override
 	public Integer call() {
 		PrintWriter w = spec.commandLine().getOut();
+		if (closeFireDoorAt != null && (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite())) {
+			throw new ModelSession.UserError("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
+		}
+		// the pictures are written after the simulation: a folder that cannot take them is refused before it
+		OutputFolder.prepare(out, "-o");
 		HospitalSimulation hospital = new HospitalSimulation(seed);
 		if (closeFireDoorAt != null) {
-			if (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite()) {
-				throw new ModelSession.UserError("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
-			}
 			hospital.sim().at(closeFireDoorAt).closeDoor(HospitalFloor.FIRE_DOOR);
 		}
 		TaskInstance task = new CollectAndDeliver(hospital.objects().item("gauze"), hospital.objects().room("storage"),
