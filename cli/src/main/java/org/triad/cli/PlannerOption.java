@@ -5,8 +5,8 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 
-import org.triad.runtime.planning.Planner;
-import org.triad.runtime.planning.Planners;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.PddlPlanners;
 
 /**
  * The {@code --planner} option, checked at start-up: an unknown name, or an external planner's
@@ -16,10 +16,10 @@ final class PlannerOption {
 	private PlannerOption() {
 	}
 
-	static Planner resolve(String spec) {
-		Planner planner;
+	static PddlPlanner resolve(String spec) {
+		PddlPlanner planner;
 		try {
-			planner = Planners.byName(spec);
+			planner = PddlPlanners.byName(spec);
 		} catch (IllegalArgumentException e) {
 			throw new ModelSession.UserError("--planner: " + e.getMessage());
 		}
