@@ -57,7 +57,7 @@ public final class ArcCommand implements Callable<Integer> {
 		if (!Files.isDirectory(dir)) {
 			throw new ModelSession.UserError("not a folder: " + dir);
 		}
-		OutputFolder.prepare(out, "--svg");
+		OutputFolder.check(out, "--svg");
 		LoadedApplication app = ApplicationLoader.load(dir);
 		if (app.diagnostics().stream().anyMatch(d -> ArcIssueCodes.UNKNOWN_COMPONENT.equals(d.code()))) {
 			app = ApplicationLoader.load(dir, List.of(refArcModels()));
@@ -77,6 +77,7 @@ public final class ArcCommand implements Callable<Integer> {
 		}
 		ArcDiagram diagram = new ArcDiagram();
 		for (ComponentType c : drawn) {
+			Files.createDirectories(out);
 			Path svg = out.resolve(c.getName() + ".svg");
 			render(diagram.dot(c), svg);
 			spec.commandLine().getOut().println("drew " + ArcModels.qualifiedName(c) + " into " + svg);

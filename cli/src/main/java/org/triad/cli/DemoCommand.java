@@ -45,7 +45,7 @@ public final class DemoCommand implements Callable<Integer> {
 			throw new ModelSession.UserError("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
 		}
 		// the pictures are written after the simulation: a folder that cannot take them is refused before it
-		OutputFolder.prepare(out, "-o");
+		OutputFolder.check(out, "-o");
 		HospitalSimulation hospital = new HospitalSimulation(seed);
 		if (closeFireDoorAt != null) {
 			hospital.sim().at(closeFireDoorAt).closeDoor(HospitalFloor.FIRE_DOOR);

@@ -38,7 +38,7 @@ public final class GenerateCommand implements Callable<Integer> {
 		if (!Files.isDirectory(dir)) {
 			throw new ModelSession.UserError("not a folder: " + dir);
 		}
-		OutputFolder.prepare(out, "-o");
+		OutputFolder.check(out, "-o");
 		LoadedApplication app = TriadJavaGenerator.load(dir);
 		for (ModelDiagnostic d : app.diagnostics()) {
 			spec.commandLine().getOut().println(d.format(app.root()));

@@ -31,13 +31,14 @@ public final class PddlCommand implements Callable<Integer> {
 
 	@Override
 	public Integer call() throws Exception {
-		OutputFolder.prepare(out, "-o");
+		OutputFolder.check(out, "-o");
 		SituationOptions.Opened opened = app.open();
 		ModelSession session = opened.session();
 		State s = opened.state();
 		ModelSession.Call call = ModelSession.parseCall(goal, s);
 		ModelGoal g = new ModelGoal(session.schema, call.name(), call.args());
 		PddlTranslator.Task task = new PddlTranslator(session.schema).translate(s, g.schema(), g.binding());
+		Files.createDirectories(out);
 		Files.writeString(out.resolve("domain.pddl"), task.domain());
 		Files.writeString(out.resolve("problem.pddl"), task.problem());
 		spec.commandLine().getOut().println("wrote " + out.resolve("domain.pddl") + " and " + out.resolve("problem.pddl"));

@@ -85,7 +85,10 @@ public class ArcDiagram {
 		if (t == null || t.eIsProxy()) {
 			return middle;
 		}
-		return "{" + fields(ArcModels.ports(t, Direction.IN)) + "}|" + middle + "|{" + fields(ArcModels.ports(t, Direction.OUT)) + "}";
+		// with rankdir=LR a record's top level is vertical: the outer braces lay out in ports, name, out ports left to right
+		List<ArcPort> in = ArcModels.ports(t, Direction.IN);
+		List<ArcPort> out = ArcModels.ports(t, Direction.OUT);
+		return "{" + (in.isEmpty() ? "" : "{" + fields(in) + "}|") + middle + (out.isEmpty() ? "" : "|{" + fields(out) + "}") + "}";
 	}
 
 	private static String fields(List<ArcPort> ports) {
