@@ -3,6 +3,7 @@ package org.triad.generator.arc;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.Function;
+import java.util.regex.Pattern;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
@@ -20,6 +21,9 @@ import org.triad.dsl.semantics.ArcModels;
  * {@link ArcJavaGeneratorSetup}); expects validated models.
  */
 public class ArcGenerator extends AbstractGenerator {
+	private static final Pattern TRAILING_BLANKS = Pattern.compile("[ \t]+$", Pattern.MULTILINE);
+	private static final Pattern EXTRA_BLANK_LINES = Pattern.compile("\n{3,}");
+
 	private final ArcNames names;
 	private final Function<ComponentType, HandwrittenCode> handwritten;
 	private final AtomicComponentTemplate atomic;
@@ -60,10 +64,15 @@ public class ArcGenerator extends AbstractGenerator {
 		boolean hand = handwritten.apply(c).has(names.qualifiedComponentClass(c));
 		Map<String, String> files = new LinkedHashMap<>();
 		if (ArcModels.isComposed(c)) {
-			files.put(names.javaFile(c, composed.className(c, hand)), composed.render(c, hand));
+			files.put(names.javaFile(c, composed.className(c, hand)), tidy(composed.render(c, hand)));
 		} else {
-			files.put(names.javaFile(c, atomic.className(c, hand)), atomic.render(c, hand));
+			files.put(names.javaFile(c, atomic.className(c, hand)), tidy(atomic.render(c, hand)));
 		}
 		return files;
+	}
+
+	/** Templates indent blank lines too; generated code carries no trailing blanks and no runs of blank lines. */
+	private static String tidy(String java) {
+		return EXTRA_BLANK_LINES.matcher(TRAILING_BLANKS.matcher(java).replaceAll("")).replaceAll("\n\n");
 	}
 }

@@ -52,13 +52,7 @@ class AtomicComponentTemplate {
 
 			/**
 			 * Component {@code «ArcModels.qualifiedName(c)»}, generated from its .arc model; do not edit.
-			«IF automaton === null»
-				 * Its behaviour is the hand-written subclass {@code «names.componentClass(c)»}: one handler per incoming port (TOP pattern).
-			«ELSEIF handwritten»
-				 * Its behaviour is the model's automaton; the hand-written subclass {@code «names.componentClass(c)»} refines it (TOP pattern).
-			«ELSE»
-				 * Its behaviour is the model's automaton.
-			«ENDIF»
+			 * «behaviour(c, automaton !== null, handwritten)»
 			«JavaDoc.paragraph(ArcModels.documentation(c))» */
 			«IF ports.exists[names.isGeneric(it)]»
 				@SuppressWarnings("unchecked")
@@ -83,6 +77,15 @@ class AtomicComponentTemplate {
 				«ENDIF»
 			}
 		'''
+	}
+
+	private def String behaviour(ComponentType c, boolean automaton, boolean handwritten) {
+		if (!automaton)
+			"Its behaviour is the hand-written subclass {@code " + names.componentClass(c) + "}: one handler per incoming port (TOP pattern)."
+		else if (handwritten)
+			"Its behaviour is the model's automaton; the hand-written subclass {@code " + names.componentClass(c) + "} refines it (TOP pattern)."
+		else
+			"Its behaviour is the model's automaton."
 	}
 
 	private def String port(ArcPort p) {

@@ -44,10 +44,8 @@ class ComposedComponentTemplate {
 			«ENDFOR»
 
 			/**
-			 * Component {@code «ArcModels.qualifiedName(c)»}, generated from its .arc model; do not edit: ports, subcomponents and connectors.
-			«IF handwritten»
-				 * The hand-written subclass {@code «names.componentClass(c)»} extends it (TOP pattern).
-			«ENDIF»
+			 * Component {@code «ArcModels.qualifiedName(c)»}, generated from its .arc model; do not edit: ports, subcomponents and connectors.«IF handwritten»
+			 * The hand-written subclass {@code «names.componentClass(c)»} extends it (TOP pattern).«ENDIF»
 			«JavaDoc.paragraph(ArcModels.documentation(c))» */
 			«IF ports.exists[names.isGeneric(it)]»
 				@SuppressWarnings("unchecked")
