@@ -74,4 +74,6 @@ public final class ArcIssueCodes {
 	public static final String AUTOMATON_IN_COMPOSED = "arc.automaton-in-composed";
 	/** A subcomponent of a generic component type gets a different number of type arguments than the type has type parameters. */
 	public static final String TYPE_ARGUMENT_COUNT = "arc.type-argument-count";
+	/** A type argument is a primitive type ({@code Buffer<int>}); Java's generics take reference types ({@code Buffer<Integer>}). */
+	public static final String PRIMITIVE_TYPE_ARGUMENT = "arc.primitive-type-argument";
 }

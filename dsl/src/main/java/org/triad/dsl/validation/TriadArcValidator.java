@@ -366,6 +366,19 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 	}
 
 	@Check
+	public void checkTypeArgumentsAreReferenceTypes(Subcomponent sub) {
+		for (int i = 0; i < sub.getTypeArguments().size(); i++) {
+			String argument = sub.getTypeArguments().get(i).trim();
+			if (ArcExpressionTypes.isPrimitive(argument)) {
+				error("type argument " + argument + " of subcomponent '" + sub.getName() + "' must be a reference type (its box, e.g. "
+						+ (argument.equals("int") ? "Integer" : argument.equals("char") ? "Character"
+								: Character.toUpperCase(argument.charAt(0)) + argument.substring(1)) + ")",
+						sub, A.getSubcomponent_TypeArguments(), i, ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT);
+			}
+		}
+	}
+
+	@Check
 	public void checkTypeArguments(Subcomponent sub) {
 		ComponentType type = sub.getType();
 		if (type == null || type.eIsProxy()) {

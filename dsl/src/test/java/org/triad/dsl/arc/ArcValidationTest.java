@@ -242,6 +242,13 @@ class ArcValidationTest {
 	}
 
 	@Test
+	void typeArgumentsAreReferenceTypes() {
+		assertEquals(List.of("Pipe.arc:5 " + ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT),
+				ArcModelSet.of(Map.of("Buffer.arc", BUFFER, "Pipe.arc", PIPE.replace("Buffer<Integer> first(2);", "Buffer<int> first(2);")))
+						.issues().stream().filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList());
+	}
+
+	@Test
 	void typeArgumentsTypeTheSubcomponentsPorts() {
 		assertEquals(List.of("Pipe.arc:8 " + ArcIssueCodes.TYPE_MISMATCH, "Pipe.arc:9 " + ArcIssueCodes.TYPE_MISMATCH), ArcModelSet.of(Map.of("Buffer.arc", BUFFER,
 				"Pipe.arc", PIPE.replace("Buffer<Integer> second(3);", "Buffer<String> second(3);"))).issues().stream()
