@@ -125,10 +125,15 @@ public class ArcDiagram {
 					.append(" [label=").append(quote(label(t))).append("];\n");
 		}
 		b.append("  }\n");
-		// the ports that trigger transitions lead into the automaton, the ports it sends on out of it
+		// invisible edges keep incoming ports left of the automaton and outgoing ports right of it
 		if (initial != null) {
 			for (ArcPort p : ArcModels.ports(c, Direction.IN)) {
 				b.append("  ").append(quote("in:" + p.getName())).append(" -> \"start\" [style=invis];\n");
+			}
+		}
+		for (AutomatonState s : a.getStates()) {
+			for (ArcPort p : ArcModels.ports(c, Direction.OUT)) {
+				b.append("  ").append(quote("state:" + s.getName())).append(" -> ").append(quote("out:" + p.getName())).append(" [style=invis];\n");
 			}
 		}
 	}
