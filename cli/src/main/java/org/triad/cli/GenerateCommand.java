@@ -39,6 +39,7 @@ public final class GenerateCommand implements Callable<Integer> {
 		if (!Files.isDirectory(dir)) {
 			throw new ModelSession.UserError("not a folder: " + dir);
 		}
+		OutputFolder.check(out, "-o");
 		LoadedApplication app = ApplicationAssembler.load(dir);
 		for (ModelDiagnostic d : app.diagnostics()) {
 			spec.commandLine().getOut().println(d.format(app.root()));

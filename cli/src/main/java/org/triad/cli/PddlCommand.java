@@ -31,6 +31,7 @@ public final class PddlCommand implements Callable<Integer> {
 
 	@Override
 	public Integer call() throws Exception {
+		OutputFolder.check(out, "-o");
 		SituationOptions.Opened opened = app.open();
 		ModelSession session = opened.session();
 		State s = opened.state();

@@ -47,6 +47,11 @@ public final class RunCommand implements Callable<Integer> {
 
 	@Override
 	public Integer call() {
+		// configuration errors are refused before anything runs, not found out as failures at runtime
+		if (!(planningTimeout > 0) || Double.isInfinite(planningTimeout)) {
+			throw new ModelSession.UserError("--planning-timeout takes a time in seconds > 0, not " + planningTimeout);
+		}
+		PddlPlanner engine = PlannerOption.resolve(planner);
 		SituationOptions.Opened opened = app.open();
 		ModelSession session = opened.session();
 		State s = opened.state();
@@ -61,16 +66,13 @@ public final class RunCommand implements Callable<Integer> {
 			} catch (NumberFormatException e) {
 				throw new ModelSession.UserError("--fail takes ACTION or ACTION@N with N a number, not '" + f + "'");
 			}
+			if (nth < 1) {
+				throw new ModelSession.UserError("--fail: calls are counted from 1, not " + nth + " in '" + f + "'");
+			}
 			if (session.schema.actions().stream().noneMatch(a -> a.name().equals(parts[0]))) {
 				throw new ModelSession.UserError("--fail: the application has no action '" + parts[0] + "'");
 			}
 			world.failOnCall(parts[0], nth);
-		}
-		PddlPlanner engine;
-		try {
-			engine = PddlPlanners.byName(planner);
-		} catch (IllegalArgumentException e) {
-			throw new ModelSession.UserError(e.getMessage());
 		}
 		GoalSolver modelPlanner = new GoalSolver(session.schema, engine, Duration.ofMillis((long) (planningTimeout * 1000)));
 		RefArcRun run = new RefArcRunner(world, new SchemaGoalPlanner(modelPlanner), world).run(instance);

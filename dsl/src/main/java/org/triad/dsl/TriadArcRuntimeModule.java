@@ -1,12 +1,10 @@
 package org.triad.dsl;
 
 import org.eclipse.xtext.conversion.IValueConverterService;
-import org.eclipse.xtext.generator.IGenerator2;
 import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
 import org.eclipse.xtext.parser.antlr.ISyntaxErrorMessageProvider;
 import org.eclipse.xtext.scoping.IScopeProvider;
 import org.eclipse.xtext.scoping.impl.AbstractDeclarativeScopeProvider;
-import org.triad.dsl.arc.generator.ArcGenerator;
 import org.triad.dsl.conversion.ArcValueConverters;
 import org.triad.dsl.linking.ArcLinkingDiagnosticMessageProvider;
 import org.triad.dsl.linking.TriadSyntaxErrorMessageProvider;
@@ -29,10 +27,6 @@ public class TriadArcRuntimeModule extends AbstractTriadArcRuntimeModule {
 
 	public Class<? extends ISyntaxErrorMessageProvider> bindISyntaxErrorMessageProvider() {
 		return TriadSyntaxErrorMessageProvider.class;
-	}
-
-	public Class<? extends IGenerator2> bindIGenerator2() {
-		return ArcGenerator.class;
 	}
 
 	@Override

@@ -15,8 +15,9 @@
  * {@link org.triad.refarc.RefArcRunner} runs one task synchronously for tests and the CLI.
  *
  * <p>The architecture generator emits, from the models in {@code src/main/arc}, the {@code *TOP}
- * classes (ports and one handler per in port, MontiArc's TOP pattern) that the hand-written
- * components extend, and the compositions {@code RefArc} and {@code OpenRefArc}; the build puts
- * them in {@code target/generated-sources/arc}.
+ * classes (MontiArc's TOP pattern) that the hand-written components extend: ports and one handler per
+ * in port, and for the Controller its whole behaviour, the automaton of {@code Controller.arc}; and the
+ * compositions {@code RefArc} and {@code OpenRefArc}. The build ({@code xtext-maven-plugin}) puts them
+ * in {@code target/generated-sources/arc}.
  */
 package org.triad.refarc;

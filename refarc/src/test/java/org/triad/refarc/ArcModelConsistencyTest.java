@@ -26,7 +26,7 @@ import org.triad.runtime.component.Port;
  * of the generator from the model text.
  */
 class ArcModelConsistencyTest {
-    private static final Path MODELS = Path.of("src/main/arc/refarc");
+    private static final Path MODELS = Path.of("src/main/arc/org/triad/refarc");
     private static final Pattern PORT = Pattern.compile("^\\s*port (in|out) (\\w+) (\\w+);", Pattern.MULTILINE);
     private static final Pattern SUB = Pattern.compile("^\\s*([A-Z]\\w*) (\\w+)(\\([^)]*\\))?;", Pattern.MULTILINE);
     private static final Pattern CONNECTOR = Pattern.compile("^\\s*([\\w.]+) -> ([\\w., ]+);", Pattern.MULTILINE);

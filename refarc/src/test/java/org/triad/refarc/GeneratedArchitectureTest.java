@@ -34,8 +34,8 @@ import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.arc.ArcModel;
 import org.triad.dsl.arc.ComponentType;
-import org.triad.dsl.arc.generator.ArcGenerator;
-import org.triad.dsl.arc.generator.ArcNames;
+import org.triad.generator.arc.ArcGenerator;
+import org.triad.generator.arc.ArcNames;
 
 /**
  * The architecture generator's output for src/main/arc, freshly generated here (independently of
@@ -55,7 +55,7 @@ class GeneratedArchitectureTest {
         LoadedApplication app = ApplicationAssembler.load(MODELS);
         assertEquals("", app.diagnostics().stream().map(d -> d.format(app.root())).collect(Collectors.joining("\n")));
         Map<String, String> generated = new LinkedHashMap<>();
-        ArcGenerator generator = new ArcGenerator(new ArcNames("org.triad"));
+        ArcGenerator generator = new ArcGenerator(new ArcNames());
         Map<String, ComponentType> components = new LinkedHashMap<>();
         for (Resource r : app.resourceSet().getResources()) {
             if (!r.getContents().isEmpty() && r.getContents().get(0) instanceof ArcModel m) {

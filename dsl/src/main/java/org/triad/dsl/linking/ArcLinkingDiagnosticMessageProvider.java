@@ -11,7 +11,7 @@ import org.triad.dsl.arc.PortRef;
 import org.triad.dsl.arc.Subcomponent;
 import org.triad.dsl.validation.ArcIssueCodes;
 
-/** Unresolved names in .arc models get a stable code per kind (component, port, subcomponent, state). */
+/** Unresolved names in .arc models get a stable code per kind (component, port, subcomponent, state, name in a guard or action). */
 public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
 	private static final ArcPackage A = ArcPackage.eINSTANCE;
 
@@ -39,6 +39,16 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 		if (ref == A.getPortRef_Subcomponent()) {
 			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);
 			return error(ArcIssueCodes.UNKNOWN_SUBCOMPONENT, "unknown subcomponent '" + name + "' of component '"
+					+ (owner == null ? "?" : owner.getName()) + "'");
+		}
+		if (ref == A.getTransition_Trigger()) {
+			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);
+			return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of component '"
+					+ (owner == null ? "?" : owner.getName()) + "' as trigger");
+		}
+		if (ref == A.getNameRef_Target() || ref == A.getAssignment_Target()) {
+			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);
+			return error(ArcIssueCodes.UNKNOWN_NAME, "unknown name '" + name + "': not a variable, configuration parameter or port of component '"
 					+ (owner == null ? "?" : owner.getName()) + "'");
 		}
 		if (ref == A.getTransition_Source() || ref == A.getTransition_Target()) {

@@ -14,7 +14,8 @@ import org.triad.dsl.semantics.ArcModels;
 
 /**
  * Ports, subcomponents and states are local names: {@code p} is a port of the enclosing component,
- * {@code sub.p} a port of the subcomponent's type, and a transition names states of its automaton.
+ * {@code sub.p} a port of the subcomponent's type, a transition names states of its automaton and a
+ * port as trigger, and guards and actions name the component's variables, parameters and ports.
  * Component types go through the import-aware default (qualified names, imports, same package).
  */
 public class TriadArcScopeProvider extends AbstractTriadArcScopeProvider {
@@ -34,6 +35,13 @@ public class TriadArcScopeProvider extends AbstractTriadArcScopeProvider {
 		if (reference == A.getPortRef_Subcomponent()) {
 			ComponentType owner = EcoreUtil2.getContainerOfType(context, ComponentType.class);
 			return owner == null ? IScope.NULLSCOPE : Scopes.scopeFor(owner.getSubcomponents());
+		}
+		if (reference == A.getNameRef_Target() || reference == A.getAssignment_Target() || reference == A.getTransition_Trigger()) {
+			ComponentType owner = EcoreUtil2.getContainerOfType(context, ComponentType.class);
+			if (owner == null) {
+				return IScope.NULLSCOPE;
+			}
+			return Scopes.scopeFor(reference == A.getTransition_Trigger() ? ArcModels.ports(owner) : ArcModels.members(owner));
 		}
 		if (reference == A.getTransition_Source() || reference == A.getTransition_Target()) {
 			Automaton automaton = EcoreUtil2.getContainerOfType(context, Automaton.class);

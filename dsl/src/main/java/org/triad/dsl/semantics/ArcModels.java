@@ -9,6 +9,10 @@ import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.ILeafNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.triad.dsl.arc.ArcImport;
+import org.triad.dsl.arc.ArcNamedElement;
+import org.triad.dsl.arc.Automaton;
+import org.triad.dsl.arc.AutomatonState;
+import org.triad.dsl.arc.TypeParameter;
 import org.triad.dsl.arc.ArcModel;
 import org.triad.dsl.arc.ArcPort;
 import org.triad.dsl.arc.ComponentType;
@@ -93,6 +97,32 @@ public final class ArcModels {
 			}
 		}
 		return text.toString().strip();
+	}
+
+	public static ComponentType component(EObject e) {
+		return EcoreUtil2.getContainerOfType(e, ComponentType.class);
+	}
+
+	/** The component's automaton, or null: at most one is valid. */
+	public static Automaton automaton(ComponentType c) {
+		return c.getAutomata().isEmpty() ? null : c.getAutomata().get(0);
+	}
+
+	public static AutomatonState initialState(Automaton a) {
+		return a.getStates().stream().filter(AutomatonState::isInitial).findFirst().orElse(null);
+	}
+
+	/** The names a guard or action can use: variables, configuration parameters and ports of the component. */
+	public static List<ArcNamedElement> members(ComponentType c) {
+		List<ArcNamedElement> members = new ArrayList<>();
+		members.addAll(c.getVariables());
+		members.addAll(c.getParameters());
+		members.addAll(ports(c));
+		return members;
+	}
+
+	public static List<String> typeParameterNames(ComponentType c) {
+		return c.getTypeParameters().stream().map(TypeParameter::getName).toList();
 	}
 
 	public static List<String> imports(EObject e) {

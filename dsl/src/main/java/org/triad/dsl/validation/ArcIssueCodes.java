@@ -25,6 +25,9 @@ public final class ArcIssueCodes {
 	public static final String TWO_SENDERS = "arc.two-senders";
 	/** An atomic component (one without subcomponents) has connectors. */
 	public static final String CONNECTOR_IN_ATOMIC = "arc.connector-in-atomic";
+	/** A guard or action names something that is not a variable, configuration parameter or port of its component. */
+	public static final String UNKNOWN_NAME = "arc.unknown-name";
+	/** An automaton has states but none is {@code initial}: the component would not know where to start. */
 	public static final String NO_INITIAL_STATE = "arc.no-initial-state";
 	public static final String MULTIPLE_INITIAL_STATES = "arc.multiple-initial-states";
 	/** A component has more than one automaton block. */
@@ -43,4 +46,34 @@ public final class ArcIssueCodes {
 	public static final String UNCONNECTED_PORT = "arc.unconnected-port";
 	/** A subcomponent gets a different number of arguments than its type has configuration parameters. */
 	public static final String ARGUMENT_COUNT = "arc.argument-count";
+	/** Warning: no chain of transitions leads from the initial state to this state. */
+	public static final String UNREACHABLE_STATE = "arc.unreachable-state";
+	/**
+	 * Two transitions leave one state on the same trigger (or both without one) and both can fire: at
+	 * least one has no guard, or their guards are the same text. Guards that overlap otherwise are not
+	 * detected (that needs a solver); the generated code takes the first in model order.
+	 */
+	public static final String NONDETERMINISTIC_TRANSITIONS = "arc.nondeterministic-transitions";
+	/**
+	 * A guard, action or variable initialiser does not type-check: a guard that is not Boolean, an
+	 * operator on operands it does not apply to, a value of the wrong type assigned or sent, an
+	 * expression that is not a call used as a statement. Members of Java types ({@code x.foo()}) are
+	 * not known to the models and are checked by the Java compiler.
+	 */
+	public static final String EXPRESSION_TYPE = "arc.expression-type";
+	/** An action assigns to an incoming port: only outgoing ports can be sent on. */
+	public static final String SEND_ON_INPUT = "arc.send-on-input";
+	/** An action assigns to a configuration parameter, which is fixed when the component is created. */
+	public static final String NOT_ASSIGNABLE = "arc.not-assignable";
+	/**
+	 * A guard or action reads a port that carries no message there: an outgoing port, or an incoming
+	 * port other than the transition's trigger (a variable initialiser reads no port at all).
+	 */
+	public static final String PORT_NOT_READABLE = "arc.port-not-readable";
+	/** A component with subcomponents also has an automaton: its behaviour is its parts'. */
+	public static final String AUTOMATON_IN_COMPOSED = "arc.automaton-in-composed";
+	/** A subcomponent of a generic component type gets a different number of type arguments than the type has type parameters. */
+	public static final String TYPE_ARGUMENT_COUNT = "arc.type-argument-count";
+	/** A type argument is a primitive type ({@code Buffer<int>}); Java's generics take reference types ({@code Buffer<Integer>}). */
+	public static final String PRIMITIVE_TYPE_ARGUMENT = "arc.primitive-type-argument";
 }

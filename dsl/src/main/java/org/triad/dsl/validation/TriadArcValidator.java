@@ -20,6 +20,14 @@ import org.eclipse.xtext.resource.IResourceDescriptions;
 import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
 import org.triad.dsl.arc.ArcNamedElement;
+import org.triad.dsl.arc.Assignment;
+import org.triad.dsl.arc.ConfigParameter;
+import org.triad.dsl.arc.ExpressionStatement;
+import org.triad.dsl.arc.MemberAccess;
+import org.triad.dsl.arc.NewInstance;
+import org.triad.dsl.arc.Statement;
+import org.triad.dsl.arc.Transition;
+import org.triad.dsl.arc.Variable;
 import org.triad.dsl.arc.ArcPackage;
 import org.triad.dsl.arc.ArcPort;
 import org.triad.dsl.arc.Automaton;
@@ -30,6 +38,7 @@ import org.triad.dsl.arc.Direction;
 import org.triad.dsl.arc.PortRef;
 import org.triad.dsl.arc.Subcomponent;
 import org.triad.dsl.semantics.ArcModels;
+import org.triad.dsl.typing.ArcExpressionTypes;
 import org.triad.dsl.typing.ArcTypes;
 
 import com.google.inject.Inject;
@@ -52,6 +61,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		members.addAll(c.getParameters());
 		members.addAll(ArcModels.ports(c));
 		members.addAll(c.getSubcomponents());
+		members.addAll(c.getVariables());
 		for (ArcNamedElement m : members) {
 			if (m.getName() == null) {
 				continue;
@@ -114,7 +124,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 					error("connector target " + target.describe() + " cannot receive here: a target must be an outgoing port of '"
 							+ c.getName() + "' or an incoming port of a subcomponent", targetRef, null, ArcIssueCodes.DIRECTION_MISMATCH);
 				}
-				if (source != null && !ArcTypes.isAssignable(source.type(), target.type())) {
+				if (source != null && source.type() != null && target.type() != null && !ArcTypes.isAssignable(source.type(), target.type())) {
 					error("type mismatch: " + source.describe() + " sends " + source.type() + " but " + target.describe()
 							+ " takes " + target.type(), targetRef, null, ArcIssueCodes.TYPE_MISMATCH);
 				}
@@ -220,6 +230,167 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		}
 		if (!initialSeen) {
 			error("the automaton has no initial state (declare one 'initial state S;')", automaton, null, ArcIssueCodes.NO_INITIAL_STATE);
+		} else {
+			warnUnreachable(automaton);
+		}
+		checkDeterminism(automaton);
+	}
+
+	private void warnUnreachable(Automaton automaton) {
+		Set<AutomatonState> reached = new HashSet<>();
+		Deque<AutomatonState> todo = new ArrayDeque<>();
+		todo.push(ArcModels.initialState(automaton));
+		while (!todo.isEmpty()) {
+			AutomatonState s = todo.pop();
+			if (reached.add(s)) {
+				for (Transition t : automaton.getTransitions()) {
+					if (t.getSource() == s && t.getTarget() != null && !t.getTarget().eIsProxy()) {
+						todo.push(t.getTarget());
+					}
+				}
+			}
+		}
+		for (AutomatonState s : automaton.getStates()) {
+			if (!reached.contains(s)) {
+				warning("state '" + s.getName() + "' is unreachable: no transitions lead to it from the initial state", s,
+						A.getArcNamedElement_Name(), ArcIssueCodes.UNREACHABLE_STATE);
+			}
+		}
+	}
+
+	/** Two transitions of one state and trigger that can both fire: one without a guard, or the same guard twice. */
+	private void checkDeterminism(Automaton automaton) {
+		List<Transition> transitions = automaton.getTransitions();
+		for (int i = 0; i < transitions.size(); i++) {
+			Transition later = transitions.get(i);
+			for (int j = 0; j < i; j++) {
+				Transition earlier = transitions.get(j);
+				if (earlier.getSource() != later.getSource() || earlier.getTrigger() != later.getTrigger() || earlier.getSource() == null) {
+					continue;
+				}
+				boolean overlap = earlier.getGuard() == null || later.getGuard() == null || guardText(earlier).equals(guardText(later));
+				if (overlap) {
+					String on = later.getTrigger() == null ? "without a trigger" : "on '" + later.getTrigger().getName() + "'";
+					error("nondeterministic: state '" + later.getSource().getName() + "' has two transitions " + on + " that can both fire (line "
+							+ NodeModelUtils.getNode(earlier).getStartLine() + " and this one): give them guards that exclude each other", later,
+							null, ArcIssueCodes.NONDETERMINISTIC_TRANSITIONS);
+					break;
+				}
+			}
+		}
+	}
+
+	private static String guardText(Transition t) {
+		return NodeModelUtils.getTokenText(NodeModelUtils.getNode(t.getGuard()));
+	}
+
+	@Check
+	public void checkAutomatonOnlyInAtomic(ComponentType c) {
+		if (ArcModels.isComposed(c)) {
+			for (Automaton a : c.getAutomata()) {
+				error("component '" + c.getName() + "' has subcomponents, so its behaviour is theirs: it cannot also have an automaton", a,
+						null, ArcIssueCodes.AUTOMATON_IN_COMPOSED);
+			}
+		}
+	}
+
+	@Check
+	public void checkTransition(Transition t) {
+		ArcPort trigger = t.getTrigger();
+		if (trigger != null && !trigger.eIsProxy() && ArcModels.direction(trigger) != Direction.IN) {
+			error("the trigger of a transition must be an incoming port; '" + trigger.getName() + "' is outgoing", t, A.getTransition_Trigger(),
+					ArcIssueCodes.DIRECTION_MISMATCH);
+		}
+		if (t.getGuard() != null) {
+			String type = ArcExpressionTypes.check(t.getGuard(), this::report);
+			if (!ArcExpressionTypes.isBoolean(type)) {
+				error("the guard must be boolean, not " + type, t.getGuard(), null, ArcIssueCodes.EXPRESSION_TYPE);
+			}
+		}
+		ComponentType c = ArcModels.component(t);
+		for (Statement st : t.getActions()) {
+			if (st instanceof Assignment a) {
+				checkAssignment(a, c);
+			} else if (st instanceof ExpressionStatement es) {
+				ArcExpressionTypes.check(es.getExpression(), this::report);
+				boolean call = es.getExpression() instanceof MemberAccess m && m.isCall() || es.getExpression() instanceof NewInstance;
+				if (!call) {
+					error("only a method call can stand alone in an action; assign or send the value instead", es, null,
+							ArcIssueCodes.EXPRESSION_TYPE);
+				}
+			}
+		}
+	}
+
+	private void checkAssignment(Assignment a, ComponentType c) {
+		String value = ArcExpressionTypes.check(a.getValue(), this::report);
+		ArcNamedElement target = a.getTarget();
+		if (target == null || target.eIsProxy()) {
+			return;
+		}
+		String targetType;
+		if (target instanceof ArcPort port) {
+			if (ArcModels.direction(port) == Direction.IN) {
+				error("cannot send on incoming port '" + port.getName() + "': an action sends on outgoing ports only", a, A.getAssignment_Target(),
+						ArcIssueCodes.SEND_ON_INPUT);
+				return;
+			}
+			targetType = ArcModels.typeName(port).trim();
+		} else if (target instanceof ConfigParameter p) {
+			error("configuration parameter '" + p.getName() + "' is fixed when the component is created and cannot be assigned; use a variable",
+					a, A.getAssignment_Target(), ArcIssueCodes.NOT_ASSIGNABLE);
+			return;
+		} else {
+			targetType = ((Variable) target).getType().trim();
+		}
+		if (!ArcExpressionTypes.isAssignable(value, targetType, c)) {
+			error((target instanceof ArcPort ? "cannot send " : "cannot assign ") + value + " to " + targetType + " '" + target.getName() + "'",
+					a.getValue(), null, ArcIssueCodes.EXPRESSION_TYPE);
+		}
+	}
+
+	@Check
+	public void checkVariable(Variable v) {
+		if (v.getInitial() == null || v.getType() == null) {
+			return;
+		}
+		String value = ArcExpressionTypes.check(v.getInitial(), this::report);
+		if (!ArcExpressionTypes.isAssignable(value, v.getType().trim(), ArcModels.component(v))) {
+			error("cannot initialise " + v.getType().trim() + " '" + v.getName() + "' with " + value, v.getInitial(), null,
+					ArcIssueCodes.EXPRESSION_TYPE);
+		}
+	}
+
+	private void report(String code, String message, EObject where) {
+		error(message, where, null, code);
+	}
+
+	@Check
+	public void checkTypeArgumentsAreReferenceTypes(Subcomponent sub) {
+		for (int i = 0; i < sub.getTypeArguments().size(); i++) {
+			String argument = sub.getTypeArguments().get(i).trim();
+			if (ArcExpressionTypes.isPrimitive(argument)) {
+				error("type argument " + argument + " of subcomponent '" + sub.getName() + "' must be a reference type (its box, e.g. "
+						+ (argument.equals("int") ? "Integer" : argument.equals("char") ? "Character"
+								: Character.toUpperCase(argument.charAt(0)) + argument.substring(1)) + ")",
+						sub, A.getSubcomponent_TypeArguments(), i, ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT);
+			}
+		}
+	}
+
+	@Check
+	public void checkTypeArguments(Subcomponent sub) {
+		ComponentType type = sub.getType();
+		if (type == null || type.eIsProxy()) {
+			return;
+		}
+		int expected = type.getTypeParameters().size();
+		int actual = sub.getTypeArguments().size();
+		if (expected != actual) {
+			error("subcomponent '" + sub.getName() + "' gives " + actual + " type argument" + (actual == 1 ? "" : "s") + " but component '"
+					+ type.getName() + "' has " + expected + " type parameter" + (expected == 1 ? "" : "s")
+					+ (expected == 0 ? "" : " (" + String.join(", ", ArcModels.typeParameterNames(type)) + ")"), sub,
+					A.getSubcomponent_Type(), ArcIssueCodes.TYPE_ARGUMENT_COUNT);
 		}
 	}
 
@@ -229,6 +400,9 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		}
 		if (e instanceof Subcomponent) {
 			return "subcomponent";
+		}
+		if (e instanceof Variable) {
+			return "variable";
 		}
 		return "configuration parameter";
 	}
@@ -250,9 +424,24 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 			if (sub != null && sub.eIsProxy()) {
 				return null;
 			}
-			String type = ArcTypes.resolve(ArcModels.typeName(port), ArcModels.imports(port));
+			String declared = substitute(ArcModels.typeName(port), sub);
+			String type = declared == null ? null : ArcTypes.resolve(declared, sub == null ? ArcModels.imports(port) : ArcModels.imports(sub));
 			String label = sub == null ? port.getName() : sub.getName() + "." + port.getName();
 			return new Endpoint(label, label, sub == null, ArcModels.direction(port), type);
+		}
+
+		/** A port type of a generic subcomponent's type with its type parameters replaced by the subcomponent's type arguments. */
+		private static String substitute(String portType, Subcomponent sub) {
+			if (sub == null || sub.getType() == null || sub.getType().eIsProxy()) {
+				return portType;
+			}
+			List<String> parameters = ArcModels.typeParameterNames(sub.getType());
+			int i = parameters.indexOf(ArcTypes.erasure(portType));
+			if (i < 0) {
+				return portType;
+			}
+			// with the wrong number of type arguments (reported on the subcomponent) the type is unknown
+			return parameters.size() == sub.getTypeArguments().size() ? sub.getTypeArguments().get(i).trim() : null;
 		}
 
 		boolean canSend() {

@@ -24,8 +24,6 @@ class ArcInApplicationTest {
 		copy(Path.of("..", "refarc", "src", "main", "arc"), app.resolve("arc"));
 		Files.writeString(app.resolve("arc/HospitalApp.arc"), """
 				package app;
-				import refarc.RefArc;
-				import refarc.RemoteOperator;
 				import org.triad.runtime.app.TaskInstance;
 				import org.triad.refarc.*;
 				component HospitalApp(StateSource s, GoalPlanner g, ActionRunner a) {
@@ -44,7 +42,7 @@ class ArcInApplicationTest {
 				.replace("core.status -> status, operator.status;", "core.status -> status, operator.status, faults;"));
 		LoadedApplication bad = ApplicationAssembler.load(app);
 		// the runtime feeds 'faults'; nothing may send to it, least of all a Status
-		assertEquals(List.of("arc/HospitalApp.arc:12:43: error arc.direction-mismatch", "arc/HospitalApp.arc:12:43: error arc.type-mismatch"),
+		assertEquals(List.of("arc/HospitalApp.arc:10:43: error arc.direction-mismatch", "arc/HospitalApp.arc:10:43: error arc.type-mismatch"),
 				bad.diagnostics().stream().map(d -> d.format(bad.root())).map(s -> s.substring(0, s.indexOf(':', s.indexOf("error"))))
 						.sorted().toList());
 	}

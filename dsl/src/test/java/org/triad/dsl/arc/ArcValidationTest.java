@@ -1,12 +1,18 @@
 package org.triad.dsl.arc;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 import org.junit.jupiter.api.Test;
+import org.triad.dsl.arc.ArcModel;
+import org.triad.dsl.arc.ArcPort;
+import org.triad.dsl.arc.Assignment;
+import org.triad.dsl.arc.BinaryExpression;
+import org.triad.dsl.arc.Transition;
 import org.triad.dsl.semantics.ArcModels;
 import org.triad.dsl.validation.ArcIssueCodes;
 import org.triad.dsl.validation.CommonIssueCodes;
@@ -28,7 +34,7 @@ class ArcValidationTest {
 			  automaton {
 			    initial state Idle;
 			    state Busy;
-			    Idle -> Busy [raw > 0.5 && gain != 0] / { smooth = raw * gain; };
+			    Idle -> Busy on raw [raw > 0.5 && gain != 0] / { smooth = raw * gain; };
 			    Busy -> Idle;
 			  }
 			}
@@ -89,12 +95,164 @@ class ArcValidationTest {
 	}
 
 	@Test
-	void opaqueGuardAndActionKeepTheirText() {
+	void guardsAndActionsAreParsedExpressions() {
 		ArcModel filter = ArcModelSet.of("Filter.arc", FILTER).model("Filter.arc");
 		Transition t = filter.getComponent().getAutomata().get(0).getTransitions().get(0);
-		assertEquals("raw > 0.5 && gain != 0", t.getGuard());
-		assertEquals("smooth = raw * gain;", t.getAction());
+		assertEquals("raw", t.getTrigger().getName());
+		BinaryExpression guard = (BinaryExpression) t.getGuard();
+		assertEquals("&&", guard.getOp());
+		assertEquals(">", ((BinaryExpression) guard.getLeft()).getOp());
+		Assignment send = (Assignment) t.getActions().get(0);
+		assertEquals("smooth", send.getTarget().getName());
+		assertEquals("*", ((BinaryExpression) send.getValue()).getOp());
 		assertEquals(List.of("raw", "smooth"), ArcModels.ports(filter.getComponent()).stream().map(ArcPort::getName).toList());
+	}
+
+	/** Line 11 onwards are the transitions the bad variants change. */
+	private static final String COUNTER = """
+			package demo;
+			component Counter(int limit) {
+			  port in Integer tick;
+			  port in String reset;
+			  port out int count;
+			  port out String alarm;
+			  var int total = 0;
+			  automaton {
+			    initial state Counting;
+			    state Full;
+			    Counting -> Counting on tick [total + tick < limit] / { total = total + tick; count = total; };
+			    Counting -> Full on tick [total + tick >= limit] / { total = limit; count = total; alarm = "full at " + total; };
+			    Full -> Counting on reset [reset.equals("now")] / { total = 0; };
+			    Full -> Full on tick / { count = total; };
+			  }
+			}
+			""";
+
+	private static List<String> counter(String from, String to) {
+		assertTrue(COUNTER.contains(from), from);
+		return ArcModelSet.of("Counter.arc", COUNTER.replace(from, to)).issues().stream()
+				.map(f -> f.file() + ":" + f.line() + " " + (f.error() ? "" : "warning ") + f.code()).toList();
+	}
+
+	@Test
+	void aValidAutomatonHasNoDiagnostics() {
+		assertEquals(List.of(), ArcModelSet.of("Counter.arc", COUNTER).issues());
+	}
+
+	@Test
+	void unreachableStatesAreWarned() {
+		assertEquals(List.of("Counter.arc:11 warning " + ArcIssueCodes.UNREACHABLE_STATE), counter("    state Full;\n", "    state Full;\n    state Lost;\n"));
+		assertEquals(List.of("Counter.arc:10 warning " + ArcIssueCodes.UNREACHABLE_STATE),
+				counter("    Counting -> Full on tick [total + tick >= limit]", "    Counting -> Counting on tick [total + tick >= limit]"));
+	}
+
+	@Test
+	void transitionsThatCanFireTogetherAreNondeterministic() {
+		assertEquals(List.of("Counter.arc:15 " + ArcIssueCodes.NONDETERMINISTIC_TRANSITIONS),
+				counter("    Full -> Full on tick / { count = total; };\n", "    Full -> Full on tick / { count = total; };\n    Full -> Counting on tick [total > 0] / { total = 0; };\n"));
+		assertEquals(List.of("Counter.arc:12 " + ArcIssueCodes.NONDETERMINISTIC_TRANSITIONS),
+				counter("[total + tick >= limit]", "[total + tick < limit]"));
+		// different triggers, or guards that differ, are not flagged
+		assertEquals(List.of(), counter("    Full -> Counting on reset [reset.equals(\"now\")]", "    Full -> Counting on reset"));
+	}
+
+	@Test
+	void guardsMustBeBoolean() {
+		assertEquals(List.of("Counter.arc:11 " + ArcIssueCodes.EXPRESSION_TYPE), counter("[total + tick < limit]", "[total + tick]"));
+		assertEquals(List.of("Counter.arc:11 " + ArcIssueCodes.EXPRESSION_TYPE), counter("[total + tick < limit]", "[total < limit && tick]"));
+	}
+
+	@Test
+	void actionsMustTypeCheck() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.EXPRESSION_TYPE), counter("/ { count = total; }", "/ { total = \"many\"; }"));
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.EXPRESSION_TYPE), counter("/ { count = total; }", "/ { alarm = total; }"));
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.EXPRESSION_TYPE), counter("/ { count = total; }", "/ { count = total - \"one\"; }"));
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.EXPRESSION_TYPE), counter("/ { count = total; }", "/ { total; }"));
+		assertEquals(List.of("Counter.arc:7 " + ArcIssueCodes.EXPRESSION_TYPE), counter("var int total = 0;", "var int total = true;"));
+		// members of Java types are left to the Java compiler
+		assertEquals(List.of(), counter("/ { total = 0; }", "/ { total = reset.trim().length(); }"));
+		// numbers widen as in Java, and do not narrow
+		assertEquals(List.of("Counter.arc:11 " + ArcIssueCodes.EXPRESSION_TYPE, "Counter.arc:12 " + ArcIssueCodes.EXPRESSION_TYPE,
+				"Counter.arc:14 " + ArcIssueCodes.EXPRESSION_TYPE), counter("var int total = 0;", "var long total = 0;"));
+	}
+
+	@Test
+	void anActionSendsOnOutgoingPortsOnly() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.SEND_ON_INPUT), counter("/ { count = total; }", "/ { tick = total; }"));
+	}
+
+	@Test
+	void configurationParametersAreNotAssignable() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.NOT_ASSIGNABLE), counter("/ { count = total; }", "/ { limit = total; }"));
+	}
+
+	@Test
+	void onlyTheTriggerPortCarriesAMessage() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.PORT_NOT_READABLE), counter("/ { count = total; }", "/ { alarm = reset; }"));
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.PORT_NOT_READABLE), counter("/ { count = total; }", "/ { total = count; }"));
+		assertEquals(List.of("Counter.arc:7 " + ArcIssueCodes.PORT_NOT_READABLE), counter("var int total = 0;", "var int total = tick;"));
+	}
+
+	@Test
+	void guardsAndActionsNameMembersOfTheirComponent() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.UNKNOWN_NAME), counter("/ { count = total; }", "/ { count = totl; }"));
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.UNKNOWN_PORT), counter("Full -> Full on tick", "Full -> Full on tock"));
+	}
+
+	@Test
+	void aTriggerIsAnIncomingPort() {
+		assertEquals(List.of("Counter.arc:14 " + ArcIssueCodes.DIRECTION_MISMATCH), counter("Full -> Full on tick", "Full -> Full on count"));
+	}
+
+	@Test
+	void aComposedComponentHasNoAutomaton() {
+		assertEquals(List.of("System.arc:13 " + ArcIssueCodes.AUTOMATON_IN_COMPOSED),
+				found(SYSTEM.replace("  faults -> sink.fault;\n", "  faults -> sink.fault;\n  automaton { initial state S; }\n")));
+	}
+
+	private static final String BUFFER = """
+			package demo;
+			component Buffer<T>(int size) {
+			  port in T in;
+			  port out T out;
+			}
+			""";
+	private static final String PIPE = """
+			package demo;
+			component Pipe {
+			  port in Integer in;
+			  port out Integer out;
+			  Buffer<Integer> first(2);
+			  Buffer<Integer> second(3);
+			  in -> first.in;
+			  first.out -> second.in;
+			  second.out -> out;
+			}
+			""";
+
+	@Test
+	void genericComponentsTakeTypeArguments() {
+		assertEquals(List.of(), ArcModelSet.of(Map.of("Buffer.arc", BUFFER, "Pipe.arc", PIPE)).issues());
+		assertEquals(List.of("Pipe.arc:5 " + ArcIssueCodes.TYPE_ARGUMENT_COUNT), ArcModelSet.of(Map.of("Buffer.arc", BUFFER,
+				"Pipe.arc", PIPE.replace("Buffer<Integer> first(2);", "Buffer first(2);"))).issues().stream().filter(ArcModelSet.Found::error)
+				.map(f -> f.file() + ":" + f.line() + " " + f.code()).toList());
+		assertEquals(List.of("Pipe.arc:6 " + ArcIssueCodes.TYPE_ARGUMENT_COUNT), ArcModelSet.of(Map.of("Buffer.arc", BUFFER,
+				"Pipe.arc", PIPE.replace("Buffer<Integer> second(3);", "Buffer<Integer, String> second(3);"))).issues().stream()
+				.filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList());
+	}
+
+	@Test
+	void typeArgumentsAreReferenceTypes() {
+		assertEquals(List.of("Pipe.arc:5 " + ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT),
+				ArcModelSet.of(Map.of("Buffer.arc", BUFFER, "Pipe.arc", PIPE.replace("Buffer<Integer> first(2);", "Buffer<int> first(2);")))
+						.issues().stream().filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList());
+	}
+
+	@Test
+	void typeArgumentsTypeTheSubcomponentsPorts() {
+		assertEquals(List.of("Pipe.arc:8 " + ArcIssueCodes.TYPE_MISMATCH, "Pipe.arc:9 " + ArcIssueCodes.TYPE_MISMATCH), ArcModelSet.of(Map.of("Buffer.arc", BUFFER,
+				"Pipe.arc", PIPE.replace("Buffer<Integer> second(3);", "Buffer<String> second(3);"))).issues().stream()
+				.filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList());
 	}
 
 	@Test

@@ -119,6 +119,23 @@ class IssueCodeRegistryTest {
 		assertEquals("", String.join("\n", problems));
 	}
 
+	/** Registries tested elsewhere: each of their codes is asserted (as {@code Registry.FIELD}) in the named test class. */
+	@Test
+	void everyCodeTestedElsewhereIsAsserted() throws Exception {
+		List<String> problems = new ArrayList<>();
+		for (Map.Entry<Class<?>, String> e : TESTED_ELSEWHERE.entrySet()) {
+			Path test = Path.of("src", "test", "java", e.getValue().replace('.', '/') + ".java");
+			String text = Files.readString(test);
+			for (Field f : e.getKey().getFields()) {
+				String ref = e.getKey().getSimpleName() + "." + f.getName();
+				if (f.getType() == String.class && !text.contains(ref)) {
+					problems.add(ref + " (" + f.get(null) + ") is not asserted in " + test);
+				}
+			}
+		}
+		assertEquals("", String.join("\n", problems));
+	}
+
 	@Test
 	void everyCrossReferenceHasItsOwnCode() throws Exception {
 		Set<String> linkCodes = codes().keySet().stream().filter(c -> c.startsWith("link.")).collect(Collectors.toSet());

@@ -1,8 +1,10 @@
 package org.triad.refarc.model;
 
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
@@ -21,7 +23,7 @@ import org.triad.refarc.StateSource;
 public final class DryRunWorld implements StateSource, ActionRunner {
 	private final Transitions transitions;
 	private final Map<String, Integer> calls = new HashMap<>();
-	private final Map<String, Integer> failAt = new HashMap<>();
+	private final Map<String, Set<Integer>> failAt = new HashMap<>();
 	private State state;
 
 	public DryRunWorld(AppSchema schema, State initial) {
@@ -29,12 +31,12 @@ public final class DryRunWorld implements StateSource, ActionRunner {
 		this.state = initial;
 	}
 
-	/** Makes the {@code nth} (1-based) call of the action with this name fail. */
+	/** Makes the {@code nth} (1-based) call of the action with this name fail, in addition to those already set. */
 	public DryRunWorld failOnCall(String action, int nth) {
 		if (nth < 1) {
 			throw new IllegalArgumentException("calls are counted from 1, not " + nth);
 		}
-		failAt.put(action, nth);
+		failAt.computeIfAbsent(action, a -> new HashSet<>()).add(nth);
 		return this;
 	}
 
@@ -56,7 +58,7 @@ public final class DryRunWorld implements StateSource, ActionRunner {
 	@Override
 	public synchronized boolean execute(GroundAction a) {
 		int n = calls.merge(a.action(), 1, Integer::sum);
-		if (failAt.getOrDefault(a.action(), -1) == n) {
+		if (failAt.getOrDefault(a.action(), Set.of()).contains(n)) {
 			return false;
 		}
 		state = transitions.apply(a, state);

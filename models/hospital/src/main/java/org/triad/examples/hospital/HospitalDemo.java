@@ -58,11 +58,13 @@ public final class HospitalDemo implements Callable<Integer> {
 	@Override
 	public Integer call() {
 		PrintWriter w = spec.commandLine().getOut();
+		if (closeFireDoorAt != null && (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite())) {
+			throw new IllegalArgumentException("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
+		}
+		// the pictures are written after the simulation: a folder that cannot take them is refused before it
+		checkWritable(out);
 		HospitalSimulation hospital = new HospitalSimulation(seed);
 		if (closeFireDoorAt != null) {
-			if (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite()) {
-				throw new IllegalArgumentException("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
-			}
 			hospital.sim().at(closeFireDoorAt).closeDoor(HospitalFloor.FIRE_DOOR);
 		}
 		TaskInstance task = new CollectAndDeliver(hospital.objects().item("gauze"), hospital.objects().room("storage"),
@@ -96,5 +98,17 @@ public final class HospitalDemo implements Callable<Integer> {
 
 	private static String line(HospitalSimulation hospital, String text) {
 		return String.format(Locale.ROOT, "[%6.1f s] %s", hospital.sim().time(), text);
+	}
+
+	private static void checkWritable(Path dir) {
+		try {
+			java.nio.file.Files.createDirectories(dir);
+			java.nio.file.Files.delete(java.nio.file.Files.createTempFile(dir, ".triad-", ".probe"));
+		} catch (java.nio.file.FileSystemException e) {
+			throw new IllegalArgumentException("-o " + dir + ": cannot write pictures there: "
+					+ (e.getReason() != null ? e.getReason() : e.getClass().getSimpleName()) + " (" + e.getFile() + ")");
+		} catch (java.io.IOException e) {
+			throw new IllegalArgumentException("-o " + dir + ": cannot write pictures there: " + e);
+		}
 	}
 }

@@ -1,0 +1,99 @@
+package org.triad.generator.arc;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.triad.dsl.arc.ArcNamedElement;
+import org.triad.dsl.arc.ArcPort;
+import org.triad.dsl.arc.Assignment;
+import org.triad.dsl.arc.BinaryExpression;
+import org.triad.dsl.arc.BooleanLiteral;
+import org.triad.dsl.arc.Expression;
+import org.triad.dsl.arc.ExpressionStatement;
+import org.triad.dsl.arc.MemberAccess;
+import org.triad.dsl.arc.NameRef;
+import org.triad.dsl.arc.NewInstance;
+import org.triad.dsl.arc.NullLiteral;
+import org.triad.dsl.arc.NumberLiteral;
+import org.triad.dsl.arc.Statement;
+import org.triad.dsl.arc.StringLiteral;
+import org.triad.dsl.arc.UnaryExpression;
+import org.triad.dsl.typing.ArcExpressionTypes;
+
+/**
+ * Guards and actions of validated automata as Java: an assignment to an outgoing port sends, {@code ==}
+ * on objects is {@code Objects.equals}, and every compound expression is parenthesised so Java reads
+ * it as the model's grammar did.
+ */
+public class JavaExpressions {
+	private final ArcNames names;
+
+	public JavaExpressions(ArcNames names) {
+		this.names = names;
+	}
+
+	public String statement(Statement s) {
+		if (s instanceof Assignment a) {
+			ArcNamedElement target = a.getTarget();
+			if (target instanceof ArcPort p) {
+				return names.portField(p) + ".send(" + expression(a.getValue()) + ");";
+			}
+			return "this." + names.field(target) + " = " + expression(a.getValue()) + ";";
+		}
+		return expression(((ExpressionStatement) s).getExpression()) + ";";
+	}
+
+	public String expression(Expression e) {
+		if (e instanceof NumberLiteral n) {
+			return n.getText();
+		}
+		if (e instanceof BooleanLiteral b) {
+			return b.getText();
+		}
+		if (e instanceof StringLiteral s) {
+			return stringLiteral(s.getValue());
+		}
+		if (e instanceof NullLiteral) {
+			return "null";
+		}
+		if (e instanceof NameRef r) {
+			// the trigger port's message is the handler's parameter of the port's name; others are fields
+			return r.getTarget() instanceof ArcPort p ? names.handlerParameter(p) : "this." + names.field(r.getTarget());
+		}
+		if (e instanceof NewInstance n) {
+			return "new " + n.getType().trim() + (n.isDiamond() ? "<>" : "") + "(" + arguments(n.getArguments()) + ")";
+		}
+		if (e instanceof MemberAccess m) {
+			return expression(m.getReceiver()) + "." + m.getMember() + (m.isCall() ? "(" + arguments(m.getArguments()) + ")" : "");
+		}
+		if (e instanceof UnaryExpression u) {
+			return u.getOp() + "(" + expression(u.getOperand()) + ")";
+		}
+		BinaryExpression b = (BinaryExpression) e;
+		String l = expression(b.getLeft());
+		String r = expression(b.getRight());
+		if ((b.getOp().equals("==") || b.getOp().equals("!=")) && !ArcExpressionTypes.comparesByValue(b.getLeft(), b.getRight())) {
+			return (b.getOp().equals("!=") ? "!" : "") + "java.util.Objects.equals(" + l + ", " + r + ")";
+		}
+		return "(" + l + " " + b.getOp() + " " + r + ")";
+	}
+
+	private String arguments(List<Expression> args) {
+		return args.stream().map(this::expression).collect(Collectors.joining(", "));
+	}
+
+	private static String stringLiteral(String value) {
+		StringBuilder b = new StringBuilder("\"");
+		for (char c : value.toCharArray()) {
+			switch (c) {
+			case '"' -> b.append("\\\"");
+			case '\\' -> b.append("\\\\");
+			case '\n' -> b.append("\\n");
+			case '\r' -> b.append("\\r");
+			case '\t' -> b.append("\\t");
+			default -> b.append(c);
+			}
+		}
+		return b.append('"').toString();
+	}
+}

@@ -1,0 +1,104 @@
+package org.triad.refarc;
+
+import org.triad.runtime.app.TaskInstance;
+import org.triad.runtime.component.ComponentFault;
+
+/*
+ * Drives task execution with the paper's semantics (Sect. 5): the goals of a task in order, each
+ * planned from the state fetched right then; the actions of a plan in order; a failed planning, a
+ * failed action (a false precondition included) or a fault of the component serving the request is
+ * a failure, and after a failure the goal is re-planned, at most maxReplans times in a row; the next
+ * failure aborts the task with a remote-operation request on status. "In a row" means without a
+ * successful action in between: a successful action resets the count, and so does a new goal.
+ * Tasks that arrive meanwhile queue. Every step is reported on status.
+ *
+ * At most one request (plan or action) is outstanding; run (a TaskProgress) numbers requests, so a
+ * reply or a fault is matched to it by request id. Hand-written in org.triad.refarc.Controller: how
+ * a reply that matches no transition is reported (TOP pattern: generated ControllerTOP).
+ */
+component Controller {
+  port in TaskInstance task;
+  port in PlanResult plan;
+  port in ActionResult actionResult;
+  port in ComponentFault fault;
+  port out PlanRequest planRequest;
+  port out ActionRequest action;
+  port out Status status;
+
+  var TaskProgress run = new TaskProgress();
+  var java.util.Deque<TaskInstance> waiting = new java.util.ArrayDeque<>();
+  var int maxReplans = 3;
+  var int failures = 0;
+  var String reason = "";
+
+  automaton {
+    initial state Idle;
+    state Planning;
+    state Executing;
+    /* decisions, left at once by a transition without trigger */
+    state NextGoal;
+    state NextAction;
+    state Failed;
+    state TaskDone;
+
+    Idle -> NextGoal on task / { run.start(task); status = new Status.TaskStarted(task); };
+    Planning -> Planning on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
+    Executing -> Executing on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
+
+    NextGoal -> Planning [run.hasNextGoal()] / { run.nextGoal(); failures = 0; planRequest = run.planRequest(); };
+    NextGoal -> TaskDone [!run.hasNextGoal()] / { status = new Status.TaskCompleted(run.task()); };
+
+    Planning -> NextGoal on plan [run.answers(plan) && plan.alreadySatisfied()] / {
+      status = new Status.GoalSatisfied(run.goal(), true);
+    };
+    Planning -> NextAction on plan [run.answers(plan) && run.planFound(plan)] / {
+      run.follow(plan);
+      status = new Status.PlanFound(run.goal(), run.plan());
+    };
+    Planning -> Failed on plan [run.answers(plan) && run.planningFailed(plan)] / {
+      reason = "planning failed: " + run.planningFailure(plan);
+    };
+
+    NextAction -> Executing [run.hasNextAction()] / {
+      status = new Status.ActionStarted(run.goal(), run.action(), run.actionNumber(), run.planSize());
+      action = run.actionRequest();
+    };
+    NextAction -> NextGoal [!run.hasNextAction()] / { status = new Status.GoalSatisfied(run.goal(), false); };
+
+    Executing -> NextAction on actionResult [run.answers(actionResult) && actionResult.succeeded()] / {
+      status = new Status.ActionSucceeded(actionResult.action());
+      run.actionDone();
+      failures = 0;
+    };
+    Executing -> Failed on actionResult [run.answers(actionResult) && !actionResult.succeeded()] / {
+      status = new Status.ActionFailed(actionResult.action(), actionResult.reason());
+      reason = "action " + actionResult.action() + " failed: " + actionResult.reason();
+    };
+
+    Idle -> Idle on fault / { status = new Status.ComponentFailed(fault); };
+    Planning -> Planning on fault [!run.concerns(fault)] / { status = new Status.ComponentFailed(fault); };
+    Planning -> Failed on fault [run.concerns(fault)] / {
+      status = new Status.ComponentFailed(fault);
+      reason = "planning failed: " + run.faultReason(fault);
+    };
+    Executing -> Executing on fault [!run.concerns(fault)] / { status = new Status.ComponentFailed(fault); };
+    Executing -> Failed on fault [run.concerns(fault)] / {
+      status = new Status.ComponentFailed(fault);
+      status = new Status.ActionFailed(run.action(), run.faultReason(fault));
+      reason = "action " + run.action() + " failed: " + run.faultReason(fault);
+    };
+
+    Failed -> Planning [failures < maxReplans] / {
+      failures = failures + 1;
+      status = new Status.Replanning(run.goal(), failures, maxReplans, reason);
+      planRequest = run.planRequest();
+    };
+    Failed -> TaskDone [failures >= maxReplans] / {
+      status = new Status.TaskAborted(run.task(), run.goal(), reason);
+      status = new Status.RemoteOperationRequested(run.task(), run.goal(), reason);
+    };
+
+    TaskDone -> NextGoal [!waiting.isEmpty()] / { run.start(waiting.poll()); status = new Status.TaskStarted(run.task()); };
+    TaskDone -> Idle [waiting.isEmpty()] / { run.clear(); };
+  }
+}

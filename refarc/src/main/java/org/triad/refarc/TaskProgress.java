@@ -1,0 +1,126 @@
+package org.triad.refarc;
+
+import org.triad.runtime.app.GoalInstance;
+import org.triad.runtime.app.GroundAction;
+import org.triad.runtime.app.Plan;
+import org.triad.runtime.app.TaskInstance;
+import org.triad.runtime.component.ComponentFault;
+
+/**
+ * Where the Controller's automaton stands in its running task: the goal, the plan and the action,
+ * and the one outstanding request, numbered so replies and faults are matched to it.
+ */
+public final class TaskProgress {
+    private TaskInstance task;
+    private int goalIndex;
+    private Plan plan;
+    private int actionIndex;
+    private long outstanding;
+    private long lastRequestId;
+
+    public void start(TaskInstance t) {
+        task = t;
+        goalIndex = -1;
+        plan = null;
+        outstanding = 0;
+    }
+
+    public void clear() {
+        task = null;
+        plan = null;
+        outstanding = 0;
+    }
+
+    public TaskInstance task() {
+        return task;
+    }
+
+    public boolean hasNextGoal() {
+        return goalIndex + 1 < task.goals().size();
+    }
+
+    public void nextGoal() {
+        goalIndex++;
+        plan = null;
+    }
+
+    public GoalInstance goal() {
+        return task.goals().get(goalIndex);
+    }
+
+    /** A new request for a plan of the current goal; it is the outstanding one from now on. */
+    public PlanRequest planRequest() {
+        outstanding = ++lastRequestId;
+        return new PlanRequest(outstanding, goal());
+    }
+
+    /** Whether {@code reply} answers the outstanding request. */
+    public boolean answers(Correlated reply) {
+        return outstanding != 0 && reply.requestId() == outstanding;
+    }
+
+    public boolean planFound(PlanResult result) {
+        return !result.alreadySatisfied() && result.outcome() instanceof PlanningOutcome.Planned;
+    }
+
+    public boolean planningFailed(PlanResult result) {
+        return result.outcome() instanceof PlanningOutcome.Failed;
+    }
+
+    public String planningFailure(PlanResult result) {
+        return ((PlanningOutcome.Failed) result.outcome()).reason();
+    }
+
+    /** Takes the plan of {@code result} to execute from its first action. */
+    public void follow(PlanResult result) {
+        plan = ((PlanningOutcome.Planned) result.outcome()).plan();
+        actionIndex = 0;
+        outstanding = 0;
+    }
+
+    public Plan plan() {
+        return plan;
+    }
+
+    public boolean hasNextAction() {
+        return actionIndex < plan.size();
+    }
+
+    public GroundAction action() {
+        return plan.actions().get(actionIndex);
+    }
+
+    /** The current action's position in the plan, from 1. */
+    public int actionNumber() {
+        return actionIndex + 1;
+    }
+
+    public int planSize() {
+        return plan.size();
+    }
+
+    /** A new request to execute the current action; it is the outstanding one from now on. */
+    public ActionRequest actionRequest() {
+        outstanding = ++lastRequestId;
+        return new ActionRequest(outstanding, action());
+    }
+
+    public void actionDone() {
+        actionIndex++;
+        outstanding = 0;
+    }
+
+    /** Whether a fault happened while serving the outstanding request. */
+    public boolean concerns(ComponentFault fault) {
+        return outstanding != 0 && fault.message() instanceof Correlated c && c.requestId() == outstanding;
+    }
+
+    public String faultReason(ComponentFault fault) {
+        return "fault in " + fault.componentPath() + ": " + fault.causeDescription();
+    }
+
+    /** The outstanding request's id, 0 for none. */
+    public long outstanding() {
+        return outstanding;
+    }
+}
