@@ -144,4 +144,25 @@ class TriadEngineTest {
         SolveResult r = new TriadEngine().solve(d, p, Duration.ZERO);
         assertTrue(r.status() == SolveResult.Status.TIMEOUT || r.status() == SolveResult.Status.SOLVED, r.status().toString());
     }
+
+    @Test
+    void theDeepestGoalTheParserAcceptsIsPlannedAndValidatedOnASmallStack() throws InterruptedException {
+        Domain d = PddlParser.parseDomain(LOCKS, "locks");
+        // define, :goal, 253 and/not levels and the atom: 256 = the parser's nesting limit
+        String goal = "(and ".repeat(1) + "(and (not (not ".repeat(84) + "(at b)" + "))) ".repeat(84) + ")".repeat(1);
+        String text = "(define (problem p) (:domain locks) (:objects a b - room) (:init (at a) (door a b)) (:goal " + goal + "))";
+        Throwable[] failure = new Throwable[1];
+        // half the default thread stack: the recursive passes over formulas must fit with room to spare
+        Thread t = new Thread(null, () -> {
+            try {
+                Problem p = PddlParser.parseProblem(text, "deep.pddl");
+                assertEquals(List.of(PddlStep.of("go", "a", "b")), solveAndValidate(d, p).plan().steps());
+            } catch (Throwable e) {
+                failure[0] = e;
+            }
+        }, "deep-goal", 512 * 1024);
+        t.start();
+        t.join();
+        if (failure[0] != null) throw new AssertionError(failure[0]);
+    }
 }
