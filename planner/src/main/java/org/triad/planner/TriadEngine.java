@@ -79,7 +79,7 @@ public final class TriadEngine implements PddlPlanner {
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
         if (q.unsolvableReason() != null) {
-            return SolveResult.unsolvable(q.unsolvableReason(), new SolveResult.Stats(groundMs, 0, 0, 0));
+            return SolveResult.unreachable(q.unsolvableReason(), q.unreachable(), new SolveResult.Stats(groundMs, 0, 0, 0));
         }
         SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
         SearchTask.Scratch scratch = task.takeScratch();
