@@ -58,7 +58,7 @@ class UnreachableGoalTest {
         assertEquals(List.of(Formula.Atom.of("at", "d")), u.needs());
         assertEquals(List.of(Formula.Atom.of("door", "_", "d")), u.missing());
         assertEquals(UnreachableGoal.Kind.STATIC, u.kind());
-        assertEquals("(item-at box d) needs (at d), which no action reaches without (door _ d), and the initial state lacks it", u.toString());
+        assertEquals("(item-at box d) needs (at d): the actions that could reach it need (door _ d) (for any reachable _), which the initial state lacks", u.toString());
     }
 
     @Test
@@ -67,7 +67,7 @@ class UnreachableGoalTest {
         assertEquals(List.of(Formula.Atom.of("at", "d"), Formula.Atom.of("carries", "gauze")),
                 r.unreachable().stream().map(UnreachableGoal::goal).toList());
         assertEquals(List.of(Formula.Atom.of("door", "_", "d")), r.unreachable().get(0).missing());
-        assertTrue(r.message().startsWith("goal atoms are unreachable even ignoring delete effects: (at d): no action reaches it without (door _ d)"),
+        assertTrue(r.message().startsWith("goal atoms are unreachable even ignoring delete effects: (at d): the actions that could reach it need (door _ d) (for any reachable _), which the initial state lacks;"),
                 r.message());
     }
 

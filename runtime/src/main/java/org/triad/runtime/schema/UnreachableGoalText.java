@@ -33,8 +33,8 @@ final class UnreachableGoalText {
 		}
 		String missing = u.missing().stream().map(this::condition).collect(Collectors.joining(" or "));
 		if (u.kind() == UnreachableGoal.Kind.STATIC) {
-			sb.append(u.needs().isEmpty() ? ": no action reaches it without " : ", which no action reaches without ").append(missing)
-					.append(", and the current state lacks ").append(u.missing().size() > 1 ? "them" : "it");
+			sb.append(": the actions that could reach it need ").append(missing).append(UnreachableGoal.anyNote(u.missing()))
+					.append(", which the current state lacks");
 		} else {
 			sb.append(" needs ").append(missing).append(": none in the current state, and no action makes one from what can be reached");
 		}
