@@ -111,7 +111,7 @@ final class ReachabilityExplainer {
             end = e.parent; // the missing facts end the chain
         }
         List<Formula.Atom> needs = new ArrayList<>();
-        // the chain between the goal and the end node, each step as a pattern over the facts of its layer it leads through
+        // the chain between the goal and the end node (one fact per step: the first found)
         for (int i = end; i > 0; i = nodes.get(i).parent) needs.add(0, atom(nodes.get(i).pred, nodes.get(i).args));
         return new UnreachableGoal(atom(pred, args), needs, missing, kind);
     }

@@ -43,7 +43,8 @@ public final class FastDownwardComparison {
             Path fdPlan = work.resolve("fd.plan");
             Files.deleteIfExists(triadPlan);
             Files.deleteIfExists(fdPlan);
-            String cp = System.getProperty("java.class.path");
+            String cp = String.join(java.io.File.pathSeparator, java.util.Arrays.stream(System.getProperty("java.class.path")
+                    .split(java.io.File.pathSeparator)).map(e -> Path.of(e).toAbsolutePath().toString()).toList());
             double triadS = run(work, timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
                     SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout)));
             double fdS = run(work, timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
