@@ -27,7 +27,7 @@ public final class FastDownwardComparison {
         }
         String fd = args[0];
         double timeout = Double.parseDouble(args[1]);
-        Path root = Path.of(args[2]);
+        Path root = Path.of(args[2]).toAbsolutePath();
         Path work = Files.createTempDirectory("triad-fd");
         System.out.printf("Java %s, %d cores, load average at start %.1f, cap %.0f s per planner and problem%n%n",
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
