@@ -210,6 +210,16 @@ public final class TriadEngine implements PddlPlanner {
                 }
             }
         }
+        // the last goals may have been reached on the way, before any stage had to respect the negative goals
+        if (!Successors.satisfies(state, q.goalPos(), q.goalNeg())) {
+            long limit = Math.min(STAGE_EVALUATIONS, evaluationBudget - spent);
+            if (limit <= 0) return null;
+            BestFirstSearch.Result r = search.run(state, q.goalPos(), q.goalNeg(), 1, STAGE_WEIGHT, false, false, limit);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
+            for (int o : r.plan()) plan.add(o);
+        }
         return plan.stream().mapToInt(Integer::intValue).toArray();
     }
 

@@ -165,4 +165,18 @@ class TriadEngineTest {
         t.join();
         if (failure[0] != null) throw new AssertionError(failure[0]);
     }
+
+    @Test
+    void goalsReachedOnTheWayStillRespectTheNegativeGoals() {
+        // found by the differential test against PDDL4J: one action makes both goals true at once,
+        // so the agenda ended without a stage that checked (not (p1)); the goal is contradictory
+        Domain d = PddlParser.parseDomain("""
+                (define (domain rnd) (:requirements :strips :negative-preconditions) (:predicates (p0) (p1))
+                  (:action act0 :parameters () :precondition (and) :effect (and (p1) (p0) (not (p0)) (not (p1)))))""", "d");
+        Problem p = PddlParser.parseProblem("(define (problem r) (:domain rnd) (:init) (:goal (and (p0) (not (p1)) (p1))))", "p");
+        SolveResult r = new TriadEngine().solve(d, p, TIMEOUT);
+        assertEquals(SolveResult.Status.UNSOLVABLE, r.status(), r.message());
+        Problem q = PddlParser.parseProblem("(define (problem r) (:domain rnd) (:init) (:goal (and (p0) (p1))))", "q");
+        solveAndValidate(d, q);
+    }
 }
