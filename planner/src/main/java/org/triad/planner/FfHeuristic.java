@@ -168,4 +168,72 @@ final class FfHeuristic {
         }
         return h;
     }
+
+    /**
+     * Of the candidate facts, the one fewest relaxed steps from {@code state}, the lowest fact id
+     * among equally near ones (-1 if none is reachable): exploration stops at the first level that
+     * reaches a candidate.
+     */
+    int nearest(int[] state, int[] candidates) {
+        epoch++;
+        int[] mark = factMark;
+        for (int c : candidates) mark[c] = -epoch;
+        int tail = 0;
+        int found = -1;
+        int foundLevel = INFINITE;
+        for (int f : state) {
+            factEpoch[f] = epoch;
+            level[f] = 0;
+            queue[tail++] = f;
+            if (mark[f] == -epoch && (found < 0 || f < found)) {
+                found = f;
+                foundLevel = 0;
+            }
+        }
+        for (int o : t.noPre) {
+            for (int a : t.add[o]) {
+                if (factEpoch[a] != epoch) {
+                    factEpoch[a] = epoch;
+                    level[a] = 1;
+                    queue[tail++] = a;
+                    if (mark[a] == -epoch && foundLevel >= 1 && (found < 0 || a < found)) {
+                        found = a;
+                        foundLevel = 1;
+                    }
+                }
+            }
+        }
+        for (int head = 0; head < tail; head++) {
+            int f = queue[head];
+            int lf = level[f];
+            if (lf + 1 > foundLevel) break;
+            for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
+                int o = preOps[i];
+                int pc = preCount[o];
+                if (pc > 1) {
+                    int s2 = o << 1;
+                    if (opState[s2] != epoch) {
+                        opState[s2] = epoch;
+                        opState[s2 + 1] = pc - 1;
+                        continue;
+                    }
+                    if (--opState[s2 + 1] != 0) continue;
+                }
+                for (int j = addStart[o], aend = addStart[o + 1]; j < aend; j++) {
+                    int a = addFacts[j];
+                    if (factEpoch[a] != epoch) {
+                        factEpoch[a] = epoch;
+                        level[a] = lf + 1;
+                        queue[tail++] = a;
+                        if (mark[a] == -epoch && (found < 0 || a < found)) {
+                            found = a;
+                            foundLevel = lf + 1;
+                        }
+                    }
+                }
+            }
+        }
+        for (int c : candidates) mark[c] = 0;
+        return found;
+    }
 }

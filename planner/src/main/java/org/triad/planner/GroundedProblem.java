@@ -18,7 +18,11 @@ public final class GroundedProblem {
     private int extensions;
 
     /** A search query: the task, its initial state and goal, or the reason it is trivially unsolvable. */
-    record Query(SearchTask task, int[] init, int[] goalPos, int[] goalNeg, String unsolvableReason) { }
+    record Query(SearchTask task, int[] init, int[] goalPos, int[] goalNeg, String unsolvableReason, List<UnreachableGoal> unreachable) {
+        Query {
+            unreachable = List.copyOf(unreachable);
+        }
+    }
 
     GroundedProblem(Domain domain, Problem problem) {
         grounder = new Grounder(domain, problem);
@@ -76,11 +80,7 @@ public final class GroundedProblem {
             }
             Integer id = grounder.existingFactId(p, args);
             if (l.positive()) {
-                if (id == null || !grounder.isReached(id)) {
-                    unsolvable = "goal " + l.atom() + " is unreachable even ignoring delete effects";
-                    id = grounder.factId(p, args);
-                }
-                gp.add(id);
+                gp.add(id != null ? id : grounder.factId(p, args));
             } else if (id != null) {
                 gn.add(id);
             }
@@ -93,7 +93,24 @@ public final class GroundedProblem {
         if (task == null || task.ops.length != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
             task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
         }
-        return new Query(task, Grounder.sortedUnique(init), Grounder.sortedUnique(gp), Grounder.sortedUnique(gn), unsolvable);
+        int[] initIds = Grounder.sortedUnique(init);
+        // Reachability from this initial state: the grounding may have been extended by earlier ones.
+        List<UnreachableGoal> unreachable = new ArrayList<>();
+        if (unsolvable == null) {
+            boolean[] reached = ReachabilityExplainer.relaxedReach(task, initIds);
+            ReachabilityExplainer explainer = null;
+            for (int g : Grounder.sortedUnique(gp)) {
+                if (reached[g]) continue;
+                if (explainer == null) explainer = new ReachabilityExplainer(grounder, reached);
+                int[] f = grounder.facts.get(g);
+                unreachable.add(explainer.explain(f[0], java.util.Arrays.copyOfRange(f, 1, f.length)));
+            }
+            if (!unreachable.isEmpty()) {
+                unsolvable = "goal " + (unreachable.size() > 1 ? "atoms are" : "atom is") + " unreachable even ignoring delete effects: "
+                        + String.join("; ", unreachable.stream().map(UnreachableGoal::toString).toList());
+            }
+        }
+        return new Query(task, initIds, Grounder.sortedUnique(gp), Grounder.sortedUnique(gn), unsolvable, unreachable);
     }
 
     private int[] ids(Formula.Atom a) {

@@ -32,6 +32,10 @@ final class Grounder {
     final boolean[] fluent;
 
     private final List<Schema> schemas = new ArrayList<>();
+
+    List<Schema> schemas() {
+        return schemas;
+    }
     /** For each predicate: (schema, positive-literal index) pairs that a new fact can trigger. */
     private final List<List<int[]>> triggers = new ArrayList<>();
 
@@ -188,7 +192,8 @@ final class Grounder {
     /** A literal template: predicate and terms (param index >= 0, constant object as -(id+1)). */
     record Tpl(int pred, int[] terms) { }
 
-    private final class Schema {
+    /** A conjunctive case of an action schema, over parameter indexes and constants. */
+    final class Schema {
         final int id;
         final String action;
         final List<TypedName> params;
@@ -359,11 +364,11 @@ final class Grounder {
         instantiate(s, b);
     }
 
-    private int value(int term, int[] b) {
+    static int value(int term, int[] b) {
         return term < 0 ? -(term + 1) : b[term];
     }
 
-    private int[] args(Tpl t, int[] b) {
+    static int[] args(Tpl t, int[] b) {
         int[] a = new int[t.terms.length];
         for (int i = 0; i < a.length; i++) a[i] = value(t.terms[i], b);
         return a;

@@ -1,12 +1,14 @@
 package org.triad.planner;
 
+import java.util.List;
 import java.util.Objects;
 
 /**
  * Outcome of one planning call. {@code UNSOLVABLE} means the planner proved there is no plan
- * (exhausted its search); {@code TIMEOUT} means it gave up; {@code ERROR} carries a message.
+ * (exhausted its search, or goal atoms are unreachable even ignoring delete effects: then
+ * {@code unreachable} says why for each); {@code TIMEOUT} means it gave up; {@code ERROR} carries a message.
  */
-public record SolveResult(Status status, PddlPlan plan, String message, Stats stats) {
+public record SolveResult(Status status, PddlPlan plan, String message, Stats stats, List<UnreachableGoal> unreachable) {
     public enum Status { SOLVED, UNSOLVABLE, TIMEOUT, ERROR }
 
     /** Effort figures: milliseconds spent grounding and searching, states expanded. */
@@ -19,6 +21,16 @@ public record SolveResult(Status status, PddlPlan plan, String message, Stats st
         if (status == Status.SOLVED && plan == null) throw new IllegalArgumentException("a solved result needs a plan");
         if (stats == null) stats = Stats.NONE;
         if (message == null) message = "";
+        unreachable = unreachable == null ? List.of() : List.copyOf(unreachable);
+    }
+
+    public SolveResult(Status status, PddlPlan plan, String message, Stats stats) {
+        this(status, plan, message, stats, List.of());
+    }
+
+    /** Unsolvable because goal atoms are unreachable even ignoring delete effects, with why. */
+    public static SolveResult unreachable(String why, List<UnreachableGoal> goals, Stats stats) {
+        return new SolveResult(Status.UNSOLVABLE, null, why, stats, goals);
     }
 
     public static SolveResult solved(PddlPlan plan, Stats stats) {

@@ -20,8 +20,10 @@ import org.triad.planner.pddl.Problem;
  *     heuristic is not admissible, so shortest plans are likely, not guaranteed; on near-graph
  *     tasks such as a delivery the relaxed plan is close to exact);</li>
  * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
- *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
- *     continuing from the previous stage's end state;</li>
+ *     actions only (then over all actions if that fails), for one goal, then two, ... each stage
+ *     continuing from the previous stage's end state and keeping the goals reached so far; the goals
+ *     are taken nearest first (relaxed distance from where the last stage ended) and, within a budget,
+ *     in the problem's order; the shorter plan wins;</li>
  * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
  *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
  *     exhausting it proves the problem unsolvable);</li>
@@ -79,7 +81,7 @@ public final class TriadEngine implements PddlPlanner {
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
         if (q.unsolvableReason() != null) {
-            return SolveResult.unsolvable(q.unsolvableReason(), new SolveResult.Stats(groundMs, 0, 0, 0));
+            return SolveResult.unreachable(q.unsolvableReason(), q.unreachable(), new SolveResult.Stats(groundMs, 0, 0, 0));
         }
         SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
         SearchTask.Scratch scratch = task.takeScratch();
@@ -126,7 +128,7 @@ public final class TriadEngine implements PddlPlanner {
         } else {
             // the agenda may use a tenth of the time; the complete search gets the rest
             long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
-            plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
+            plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), h, open, effort);
         }
         if (plan == null && System.nanoTime() < deadline) {
             Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
@@ -145,29 +147,78 @@ public final class TriadEngine implements PddlPlanner {
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
     }
 
-    /** Goals in order of their relaxed distance from the initial state, achieved cumulatively. */
-    private int[] agenda(GroundedProblem.Query q, BestFirstSearch search, List<Integer> open, long[] effort) {
-        List<Integer> order = new ArrayList<>(open);
+    /**
+     * Goals achieved cumulatively, each stage continuing from where the previous one ended and keeping
+     * the goals of the earlier stages. Two orders, the shorter plan wins:
+     * <ul>
+     * <li>nearest first: each stage adds the open goal nearest (in relaxed steps) to where the previous
+     *     stage ended, which keeps a tour of many places (visitall, deliveries) from zig-zagging;</li>
+     * <li>as given: the goals in the problem's order, which suits goals that must be built in order
+     *     (blocks); it may spend at most twice the heuristic evaluations the first order needed, so it
+     *     costs little where it does not help.</li>
+     * </ul>
+     */
+    private int[] agenda(GroundedProblem.Query q, BestFirstSearch search, FfHeuristic h, List<Integer> open, long[] effort) {
+        long before = effort[1];
+        int[] nearest = agenda(q, search, h, open, effort, true, Long.MAX_VALUE);
+        long used = effort[1] - before;
+        int[] given = agenda(q, search, h, open, effort, false, nearest == null ? Long.MAX_VALUE : 2 * used + 100);
+        if (nearest == null) return given;
+        return given != null && given.length < nearest.length ? given : nearest;
+    }
+
+    private int[] agenda(GroundedProblem.Query q, BestFirstSearch search, FfHeuristic h, List<Integer> open, long[] effort,
+                         boolean nearestFirst, long evaluationBudget) {
+        List<Integer> remaining = new ArrayList<>(open);
         List<Integer> done = new ArrayList<>();
         for (int g : q.goalPos()) if (!open.contains(g)) done.add(g);
         int[] state = q.init();
         List<Integer> plan = new ArrayList<>();
-        for (int i = 0; i < order.size(); i++) {
-            done.add(order.get(i));
-            boolean last = i == order.size() - 1;
+        long spent = 0;
+        while (!remaining.isEmpty()) {
+            int next = nearestFirst ? h.nearest(state, remaining.stream().mapToInt(Integer::intValue).toArray()) : remaining.get(0);
+            if (next < 0) return null;
+            remaining.remove(Integer.valueOf(next));
+            done.add(next);
+            boolean last = remaining.isEmpty();
             int[] goals = Grounder.sortedUnique(done);
             int[] neg = last ? q.goalNeg() : new int[0];
-            BestFirstSearch.Result r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, true, STAGE_EVALUATIONS);
-            effort[0] += r.expanded();
-            effort[1] += r.evaluated();
+            long limit = Math.min(STAGE_EVALUATIONS, evaluationBudget - spent);
+            if (limit <= 0) return null;
+            BestFirstSearch.Result r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, true, limit);
+            spent += r.evaluated();
             if (r.outcome() != BestFirstSearch.Outcome.FOUND && r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
-                r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, false, STAGE_EVALUATIONS);
+                limit = Math.min(STAGE_EVALUATIONS, evaluationBudget - spent);
+                if (limit <= 0) return null;
+                effort[0] += r.expanded();
+                effort[1] += r.evaluated();
+                r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, false, limit);
+                spent += r.evaluated();
             }
             effort[0] += r.expanded();
             effort[1] += r.evaluated();
             if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
             for (int o : r.plan()) plan.add(o);
             state = r.finalState();
+            // nearest first: goals reached on the way are kept from now on (as given, they wait for
+            // their turn: protecting them early can force detours where goals must be built in order)
+            for (java.util.Iterator<Integer> it = remaining.iterator(); nearestFirst && it.hasNext(); ) {
+                int g = it.next();
+                if (Arrays.binarySearch(state, g) >= 0) {
+                    it.remove();
+                    done.add(g);
+                }
+            }
+        }
+        // the last goals may have been reached on the way, before any stage had to respect the negative goals
+        if (!Successors.satisfies(state, q.goalPos(), q.goalNeg())) {
+            long limit = Math.min(STAGE_EVALUATIONS, evaluationBudget - spent);
+            if (limit <= 0) return null;
+            BestFirstSearch.Result r = search.run(state, q.goalPos(), q.goalNeg(), 1, STAGE_WEIGHT, false, false, limit);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
+            for (int o : r.plan()) plan.add(o);
         }
         return plan.stream().mapToInt(Integer::intValue).toArray();
     }

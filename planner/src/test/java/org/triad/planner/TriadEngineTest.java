@@ -144,4 +144,39 @@ class TriadEngineTest {
         SolveResult r = new TriadEngine().solve(d, p, Duration.ZERO);
         assertTrue(r.status() == SolveResult.Status.TIMEOUT || r.status() == SolveResult.Status.SOLVED, r.status().toString());
     }
+
+    @Test
+    void theDeepestGoalTheParserAcceptsIsPlannedAndValidatedOnASmallStack() throws InterruptedException {
+        Domain d = PddlParser.parseDomain(LOCKS, "locks");
+        // define, :goal, 253 and/not levels and the atom: 256 = the parser's nesting limit
+        String goal = "(and ".repeat(1) + "(and (not (not ".repeat(84) + "(at b)" + "))) ".repeat(84) + ")".repeat(1);
+        String text = "(define (problem p) (:domain locks) (:objects a b - room) (:init (at a) (door a b)) (:goal " + goal + "))";
+        Throwable[] failure = new Throwable[1];
+        // half the default thread stack: the recursive passes over formulas must fit with room to spare
+        Thread t = new Thread(null, () -> {
+            try {
+                Problem p = PddlParser.parseProblem(text, "deep.pddl");
+                assertEquals(List.of(PddlStep.of("go", "a", "b")), solveAndValidate(d, p).plan().steps());
+            } catch (Throwable e) {
+                failure[0] = e;
+            }
+        }, "deep-goal", 512 * 1024);
+        t.start();
+        t.join();
+        if (failure[0] != null) throw new AssertionError(failure[0]);
+    }
+
+    @Test
+    void goalsReachedOnTheWayStillRespectTheNegativeGoals() {
+        // found by the differential test against PDDL4J: one action makes both goals true at once,
+        // so the agenda ended without a stage that checked (not (p1)); the goal is contradictory
+        Domain d = PddlParser.parseDomain("""
+                (define (domain rnd) (:requirements :strips :negative-preconditions) (:predicates (p0) (p1))
+                  (:action act0 :parameters () :precondition (and) :effect (and (p1) (p0) (not (p0)) (not (p1)))))""", "d");
+        Problem p = PddlParser.parseProblem("(define (problem r) (:domain rnd) (:init) (:goal (and (p0) (not (p1)) (p1))))", "p");
+        SolveResult r = new TriadEngine().solve(d, p, TIMEOUT);
+        assertEquals(SolveResult.Status.UNSOLVABLE, r.status(), r.message());
+        Problem q = PddlParser.parseProblem("(define (problem r) (:domain rnd) (:init) (:goal (and (p0) (p1))))", "q");
+        solveAndValidate(d, q);
+    }
 }

@@ -76,7 +76,7 @@ public final class PddlParser {
             if (head == null) throw err(sec, "expected a domain section such as '(:predicates ...)'");
             List<SExpr> rest = sec.items.subList(1, sec.items.size());
             switch (head) {
-                case ":requirements" -> rest.forEach(r -> reqs.add(name(r, "a requirement")));
+                case ":requirements" -> reqs.addAll(requirements(rest));
                 case ":types" -> types.addAll(typedList(rest, "object", false));
                 case ":constants" -> constants.addAll(typedList(rest, "object", false));
                 case ":predicates" -> {
@@ -104,6 +104,44 @@ public final class PddlParser {
         preds.forEach(p -> declared.add(p.name()));
         for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
         return new Domain(name, reqs, types, constants, preds, functions, actions);
+    }
+
+    /** Requirements the parser and engine handle; {@code :adl} and {@code :conditional-effects} are read, {@code when} itself is checked where it occurs. */
+    static final Set<String> SUPPORTED_REQUIREMENTS = Set.of(":strips", ":typing", ":negative-preconditions",
+            ":disjunctive-preconditions", ":equality", ":existential-preconditions", ":universal-preconditions",
+            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs");
+    /** Requirements of PDDL 1.2-3.1 that this planner does not handle (it would plan wrongly if it ignored them). */
+    static final Set<String> UNSUPPORTED_REQUIREMENTS = Set.of(":numeric-fluents", ":fluents", ":object-fluents",
+            ":durative-actions", ":duration-inequalities", ":continuous-effects", ":derived-predicates",
+            ":timed-initial-literals", ":preferences", ":constraints", ":time", ":expression-evaluation",
+            ":domain-axioms", ":safety-constraints", ":open-world", ":true-negation", ":ucpop", ":foreach-expansions",
+            ":dag-expansions", ":subgoal-through-axioms", ":action-expansions");
+
+    /**
+     * Reads a requirements list and rejects what the planner cannot honour: the error sits at the
+     * first unsupported requirement and names every one.
+     */
+    private List<String> requirements(List<SExpr> items) {
+        List<String> out = new ArrayList<>();
+        List<SExpr> bad = new ArrayList<>();
+        for (SExpr r : items) {
+            String n = name(r, "a requirement such as ':strips'");
+            if (!n.startsWith(":")) throw err(r, "expected a requirement such as ':strips', found '" + n + "'");
+            if (!SUPPORTED_REQUIREMENTS.contains(n)) bad.add(r);
+            out.add(n);
+        }
+        if (!bad.isEmpty()) {
+            StringBuilder sb = new StringBuilder();
+            for (SExpr r : bad) {
+                if (sb.length() > 0) sb.append(", ");
+                sb.append('\'').append(r.symbol).append('\'');
+                if (r != bad.get(0)) sb.append(" (").append(r.line).append(':').append(r.column).append(')');
+                if (!UNSUPPORTED_REQUIREMENTS.contains(r.symbol)) sb.append(" (not a PDDL requirement)");
+            }
+            throw err(bad.get(0), "unsupported requirement" + (bad.size() > 1 ? "s " : " ") + sb
+                    + "; Triad's planner supports " + String.join(" ", new java.util.TreeSet<>(SUPPORTED_REQUIREMENTS)));
+        }
+        return out;
     }
 
     private void checkPredicates(Action a, Set<String> declared, SExpr root) {
@@ -353,7 +391,7 @@ public final class PddlParser {
                     if (rest.size() != 1) throw err(sec, "expected '(:domain NAME)'");
                     domainName = name(rest.get(0), "a domain name");
                 }
-                case ":requirements" -> { }
+                case ":requirements" -> requirements(rest);
                 case ":objects" -> objects.addAll(typedList(rest, "object", false));
                 case ":init" -> {
                     for (SExpr f : rest) {

@@ -1,10 +1,20 @@
 package org.triad.planner.pddl;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.List;
+import java.util.Locale;
 
 /** A parsed s-expression node with its source position: a symbol or a list. */
 final class SExpr {
+    /**
+     * Deepest nesting accepted. Real domains nest a dozen levels (the IPC corpus at most 9); the limit keeps the recursive
+     * passes over formulas (parsing, normalisation, printing) far from the thread's stack size
+     * whatever the input, and turns absurd input into a located error instead of a StackOverflowError.
+     */
+    static final int MAX_DEPTH = 256;
+
     final String symbol; // null for a list
     final List<SExpr> items;
     final int line;
@@ -37,7 +47,12 @@ final class SExpr {
         return sb.append(')').toString();
     }
 
-    /** Reads exactly one top-level expression; names are lower-cased (PDDL is case-insensitive). */
+    /**
+     * Reads exactly one top-level expression, in one pass without recursion. Lexical rules as in
+     * PDDL: names are case-insensitive (lower-cased here); a name ends at white space, a
+     * parenthesis, a comment ({@code ;} to the end of the line) or a {@code ?} that starts a
+     * variable, so {@code (aircraft?a)} is {@code (aircraft ?a)}.
+     */
     static SExpr read(String text, String source) {
         Reader r = new Reader(text, source);
         r.skipBlank();
@@ -87,32 +102,47 @@ final class SExpr {
             }
         }
 
+        /** An open list being read: its items so far and where it started. */
+        private record Open(List<SExpr> items, int line, int column) { }
+
         SExpr expr() {
-            char c = text.charAt(pos);
-            int l = line, co = col;
-            if (c == '(') {
-                advance();
-                List<SExpr> items = new ArrayList<>();
-                while (true) {
-                    skipBlank();
-                    if (pos >= text.length()) {
-                        throw new PddlParseException(source, l, co, "unbalanced '(': missing ')' before end of input");
+            if (text.charAt(pos) == ')') throw error("unexpected ')'");
+            if (text.charAt(pos) != '(') return symbol();
+            Deque<Open> open = new ArrayDeque<>();
+            while (true) {
+                skipBlank();
+                if (pos >= text.length()) {
+                    Open o = open.peek();
+                    throw new PddlParseException(source, o.line, o.column, "unbalanced '(': missing ')' before end of input");
+                }
+                char c = text.charAt(pos);
+                if (c == '(') {
+                    if (open.size() >= MAX_DEPTH) {
+                        throw error("expressions nested deeper than " + MAX_DEPTH + " levels");
                     }
-                    if (text.charAt(pos) == ')') {
-                        advance();
-                        return new SExpr(null, items, l, co);
-                    }
-                    items.add(expr());
+                    open.push(new Open(new ArrayList<>(), line, col));
+                    advance();
+                } else if (c == ')') {
+                    advance();
+                    Open o = open.pop();
+                    SExpr done = new SExpr(null, o.items, o.line, o.column);
+                    if (open.isEmpty()) return done;
+                    open.peek().items.add(done);
+                } else {
+                    open.peek().items.add(symbol());
                 }
             }
-            if (c == ')') throw error("unexpected ')'");
+        }
+
+        private SExpr symbol() {
+            int l = line, co = col;
             int start = pos;
             while (pos < text.length()) {
                 char d = text.charAt(pos);
-                if (Character.isWhitespace(d) || d == '(' || d == ')' || d == ';') break;
+                if (Character.isWhitespace(d) || d == '(' || d == ')' || d == ';' || (d == '?' && pos > start)) break;
                 advance();
             }
-            return new SExpr(text.substring(start, pos).toLowerCase(java.util.Locale.ROOT), null, l, co);
+            return new SExpr(text.substring(start, pos).toLowerCase(Locale.ROOT), null, l, co);
         }
     }
 }

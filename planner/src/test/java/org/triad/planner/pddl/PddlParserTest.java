@@ -108,4 +108,89 @@ class PddlParserTest {
                 () -> PddlParser.parseProblem("(define (problem p) (:domain d) (:init (at ?x)) (:goal (at a)))", "p.pddl"));
         assertTrue(e.detail().contains("variable '?x' in the initial state"));
     }
+
+    @Test
+    void splitsNamesFromVariablesWithoutSpaces() {
+        Domain d = PddlParser.parseDomain("""
+                (define (domain zeno) (:requirements :typing)
+                  (:types aircraft city)
+                  (:predicates (at?x - aircraft ?c - city) (AIRCRAFT?a))
+                  (:action fly :parameters (?a - aircraft?from ?to - city)
+                    :precondition (and (aircraft?a)(at ?a?from))
+                    :effect (and (at?a ?to) (not(at ?a ?from)))))""", "zeno.pddl");
+        assertEquals(List.of(TypedName.of("?x", "aircraft"), TypedName.of("?c", "city")), d.predicates().get(0).parameters());
+        Action fly = d.action("fly");
+        assertEquals(List.of("?a", "?from", "?to"), fly.parameters().stream().map(TypedName::name).toList());
+        assertEquals(new Formula.And(List.of(Formula.Atom.of("aircraft", "?a"), Formula.Atom.of("at", "?a", "?from"))), fly.precondition());
+    }
+
+    @Test
+    void readsCommentsAnywhereAndIgnoresCase() {
+        Problem p = PddlParser.parseProblem("""
+                (define;comment right after a keyword
+                 (PROBLEM P1) (:Domain ZENO);another
+                 (:objects A1;a name ends at a comment
+                   - Aircraft C1 c2 - city)
+                 (:INIT (AT a1 C1)) (:goal (and ; goal
+                   (at A1 c2))))""", "p.pddl");
+        assertEquals("p1", p.name());
+        assertEquals(List.of(TypedName.of("a1", "aircraft"), TypedName.of("c1", "city"), TypedName.of("c2", "city")), p.objects());
+        assertEquals(List.of(Formula.Atom.of("at", "a1", "c1")), p.init());
+    }
+
+    @Test
+    void checksRequirementsAndNamesEachUnsupportedOneAtItsPlace() {
+        Domain d = PddlParser.parseDomain("(define (domain x) (:requirements :STRIPS :typing :adl :action-costs) (:predicates (p)))", "ok.pddl");
+        assertEquals(List.of(":strips", ":typing", ":adl", ":action-costs"), d.requirements());
+        PddlParseException e = domainError("(define (domain x)\n  (:requirements :strips :durative-actions :fluents :strps)\n  (:predicates (p)))");
+        assertEquals(2, e.line());
+        assertEquals(26, e.column());
+        assertTrue(e.detail().startsWith("unsupported requirements ':durative-actions', ':fluents' (2:44), ':strps' (2:53) (not a PDDL requirement);"),
+                e.detail());
+        assertTrue(e.detail().contains("supports :action-costs :adl"), e.detail());
+        PddlParseException inProblem = assertThrows(PddlParseException.class, () -> PddlParser.parseProblem(
+                "(define (problem p) (:domain x)\n (:requirements :timed-initial-literals) (:init) (:goal (and)))", "p.pddl"));
+        assertTrue(inProblem.getMessage().startsWith("p.pddl:2:17: unsupported requirement ':timed-initial-literals';"), inProblem.getMessage());
+        assertTrue(domainError("(define (domain x) (:requirements strips) (:predicates (p)))").detail()
+                .contains("expected a requirement such as ':strips', found 'strips'"));
+    }
+
+    /** A goal nested {@code depth} levels deep: {@code (and (and ... (at b)))}. */
+    static String deepGoalProblem(int depth) {
+        return "(define (problem deep) (:domain mini) (:objects a b - place d1 - door)\n"
+                + " (:init (at a) (open d1) (link a b d1))\n (:goal " + "(and ".repeat(depth) + "(at b)" + ")".repeat(depth) + "))";
+    }
+
+    @Test
+    void rejectsAbsurdNestingWithALocatedErrorInsteadOfOverflowingTheStack() {
+        PddlParseException e = assertThrows(PddlParseException.class, () -> PddlParser.parseProblem(deepGoalProblem(20_000), "deep.pddl"));
+        assertEquals(3, e.line());
+        assertEquals(9 + 5 * (SExpr.MAX_DEPTH - 2), e.column());
+        assertEquals("expressions nested deeper than " + SExpr.MAX_DEPTH + " levels", e.detail());
+        PddlParseException unbalanced = assertThrows(PddlParseException.class,
+                () -> PddlParser.parseProblem("(define (problem p) (:domain d) (:goal " + "(".repeat(200), "u.pddl"));
+        assertTrue(unbalanced.detail().contains("missing ')'"), unbalanced.detail());
+    }
+
+    @Test
+    void readsTheDeepestAcceptedNesting() {
+        // define, :goal, the and's and the atom: MAX_DEPTH lists in all
+        Problem p = PddlParser.parseProblem(deepGoalProblem(SExpr.MAX_DEPTH - 3), "deep.pddl");
+        Formula f = p.goal();
+        int depth = 0;
+        while (f instanceof Formula.And a) {
+            f = a.parts().get(0);
+            depth++;
+        }
+        assertEquals(SExpr.MAX_DEPTH - 3, depth);
+        assertEquals(Formula.Atom.of("at", "b"), f);
+    }
+
+    @Test
+    void readsWideInputWithoutDeepRecursion() {
+        StringBuilder init = new StringBuilder();
+        for (int i = 0; i < 50_000; i++) init.append("(link a b d").append(i).append(") ");
+        Problem p = PddlParser.parseProblem("(define (problem wide) (:domain mini) (:init " + init + ") (:goal (at b)))", "wide.pddl");
+        assertEquals(50_000, p.init().size());
+    }
 }

@@ -55,6 +55,10 @@ public final class GoalSolver {
 		try {
 			PddlTranslator.Task task = translator.translate(from, goal, binding);
 			SolveResult result = planner.solve(task.domain(), task.problem(), timeout);
+			if (!result.unreachable().isEmpty()) {
+				return new Outcome(null, "no plan: " + new UnreachableGoalText(schema, task.names())
+						.describe(UnreachableGoalText.goalLabel(goal, binding), result.unreachable()));
+			}
 			if (!result.isSolved()) {
 				return new Outcome(null, switch (result.status()) {
 					case UNSOLVABLE -> "no plan: " + (result.message().isEmpty() ? "the goal is unreachable" : result.message());

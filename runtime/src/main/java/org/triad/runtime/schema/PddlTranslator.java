@@ -71,6 +71,10 @@ public final class PddlTranslator {
 			return PddlWriter.write(problem);
 		}
 
+		PddlNames names() {
+			return names;
+		}
+
 		/** A plan step read back: a PDDL action name and its arguments (extra parameters are dropped). */
 		public GroundAction action(String pddlAction, List<String> pddlArgs) {
 			ActionSchema a = actions.get(PddlNames.lower(pddlAction));

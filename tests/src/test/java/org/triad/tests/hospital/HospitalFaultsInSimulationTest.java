@@ -111,6 +111,10 @@ class HospitalFaultsInSimulationTest {
                 "remote operation requested for task CollectAndDeliver(gauze, storage, ward1) at goal Holds(gauze):"
                         + " planning failed: no plan"),
                 milestones, () -> log(run));
+        // ... but it says why, in the model's terms
+        assertTrue(milestones(run).get(milestones(run).size() - 1).endsWith("planning failed: no plan: Holds(gauze) unreachable:"
+                + " Courier.carries(gauze) needs Building.itemAt(gauze, _): none in the current state, and no action makes one"
+                + " from what can be reached"), () -> log(run));
         assertTrue(run.refArc().statuses().stream().noneMatch(s -> s instanceof Status.ActionStarted a
                 && a.action().action().equals("pick")), "no pick was tried");
         assertTrue(h.sim().item("gauze").isRemoved());

@@ -1,0 +1,83 @@
+package org.triad.planner;
+
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+
+/**
+ * Benchmark main (not a test): Triad against Fast Downward's lama-first on IPC problems, each planner
+ * as a whole process ({@code java ... SolveOnce} and {@code fast-downward.py --alias lama-first}),
+ * one run each with a time cap, every plan replayed by {@link PlanValidator} on the lifted domain.
+ * Prints a Markdown table. Reads only local files:
+ * {@code FastDownwardComparison FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR DOMAIN_FOLDER/PROBLEM.pddl...}
+ * (the domain file is found as Fast Downward's driver finds it). See planner/BENCHMARK.md.
+ */
+public final class FastDownwardComparison {
+    public static void main(String[] args) throws Exception {
+        if (args.length < 4) {
+            System.err.println("usage: FastDownwardComparison FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR FOLDER/PROBLEM.pddl...");
+            System.exit(2);
+        }
+        String fd = args[0];
+        double timeout = Double.parseDouble(args[1]);
+        Path root = Path.of(args[2]).toAbsolutePath();
+        Path work = Files.createTempDirectory("triad-fd");
+        System.out.printf("Java %s, %d cores, load average at start %.1f, cap %.0f s per planner and problem%n%n",
+                System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
+                ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout);
+        System.out.println("| problem | Triad s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |");
+        System.out.println("|---|---|---|---|---|---|---|---|");
+        for (int i = 3; i < args.length; i++) {
+            Path problemFile = root.resolve(args[i]);
+            Path domainFile = IpcCorpusCheck.domainOf(problemFile);
+            Domain domain = PddlParser.parseDomain(domainFile);
+            Problem problem = PddlParser.parseProblem(problemFile);
+            Path triadPlan = work.resolve("triad.plan");
+            Path fdPlan = work.resolve("fd.plan");
+            Files.deleteIfExists(triadPlan);
+            Files.deleteIfExists(fdPlan);
+            String cp = String.join(java.io.File.pathSeparator, java.util.Arrays.stream(System.getProperty("java.class.path")
+                    .split(java.io.File.pathSeparator)).map(e -> Path.of(e).toAbsolutePath().toString()).toList());
+            double triadS = run(work, timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
+                    SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout)));
+            double fdS = run(work, timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
+                    "--plan-file", fdPlan.toString(), domainFile.toString(), problemFile.toString()));
+            String[] t = check(domain, problem, triadPlan);
+            String[] f = check(domain, problem, fdPlan);
+            String ratio = t[0].equals("-") || f[0].equals("-") ? "-" : String.format("%.2f", Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
+            System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio);
+        }
+    }
+
+    private static String seconds(double s, String[] check) {
+        return check[0].equals("-") ? (Double.isNaN(s) ? "timeout" : "no plan") : String.format("%.2f", s);
+    }
+
+    /** Wall seconds of the process, NaN if it hit the cap. */
+    private static double run(Path dir, double timeout, List<String> command) throws IOException, InterruptedException {
+        long t0 = System.nanoTime();
+        Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
+                .redirectOutput(dir.resolve("log.txt").toFile()).start();
+        if (!p.waitFor((long) (timeout * 1000) + 5000, TimeUnit.MILLISECONDS)) {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+            p.waitFor();
+            return Double.NaN;
+        }
+        return (System.nanoTime() - t0) / 1e9;
+    }
+
+    /** [length, valid] of a plan file, "-" if there is none. */
+    private static String[] check(Domain domain, Problem problem, Path plan) throws IOException {
+        if (!Files.exists(plan)) return new String[] {"-", "-"};
+        PddlPlan p = ExternalPlanner.parsePlan(Files.readString(plan));
+        return new String[] {Integer.toString(p.length()), PlanValidator.validate(domain, problem, p).valid() ? "yes" : "NO"};
+    }
+}
