@@ -38,12 +38,13 @@ import org.eclipse.lsp4j.launch.LSPLauncher;
 import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
-import org.eclipse.xtext.ide.server.ServerModule;
+import org.triad.dsl.ide.server.GuardedServerModule;
+import org.triad.dsl.ide.server.TriadServerLauncher;
 
 import com.google.inject.Guice;
 
 /**
- * Triad's language server (what {@code triad lsp} runs) in this JVM, spoken to over piped streams
+ * Triad's language server (what {@code triad lsp} runs: {@link GuardedServerModule}, {@link TriadServerLauncher}) in this JVM, spoken to over piped streams
  * like an editor does, in a workspace holding the logistics example. It records what would reach an
  * editor's log or the server's stderr: errors logged by Xtext (log4j) or LSP4J (java.util.logging)
  * and anything printed to {@link System#err}.
@@ -81,9 +82,8 @@ final class LanguageServerSession implements AutoCloseable {
 		PipedOutputStream clientOut = new PipedOutputStream(serverIn);
 		PipedInputStream clientIn = new PipedInputStream(1 << 20);
 		PipedOutputStream serverOut = new PipedOutputStream(clientIn);
-		LanguageServerImpl impl = Guice.createInjector(new ServerModule()).getInstance(LanguageServerImpl.class);
-		Launcher<LanguageClient> serverLauncher = LSPLauncher.createServerLauncher(impl, serverIn, serverOut);
-		impl.connect(serverLauncher.getRemoteProxy());
+		LanguageServerImpl impl = Guice.createInjector(new GuardedServerModule()).getInstance(LanguageServerImpl.class);
+		Launcher<LanguageClient> serverLauncher = TriadServerLauncher.createLauncher(impl, serverIn, serverOut, true, null);
 		serverListening = serverLauncher.startListening();
 		Launcher<LanguageServer> clientLauncher = LSPLauncher.createClientLauncher(new QuietClient(), clientIn, clientOut);
 		clientListening = clientLauncher.startListening();
