@@ -37,7 +37,7 @@ class LanguageServerFuzzTest {
 	private static LanguageServerSession session;
 	private static final int[] versions = new int[LANGUAGES.size()];
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void editedDocument(byte[] input) throws Exception {
 		if (input.length == 0) {
 			return;

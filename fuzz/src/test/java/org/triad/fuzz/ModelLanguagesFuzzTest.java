@@ -11,32 +11,32 @@ import com.code_intelligence.jazzer.junit.FuzzTest;
  * ({@code src/test/resources/org/triad/fuzz/ModelLanguagesFuzzTestInputs/<target>/}).
  */
 class ModelLanguagesFuzzTest {
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void classDiagram(byte[] content) throws IOException {
 		ModelCheckBoundary.check("LogisticsDomain.cd", content);
 	}
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void actor(byte[] content) throws IOException {
 		ModelCheckBoundary.check("LogisticsRobot.actor", content);
 	}
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void goal(byte[] content) throws IOException {
 		ModelCheckBoundary.check("IsAt.goal", content);
 	}
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void task(byte[] content) throws IOException {
 		ModelCheckBoundary.check("GoTo.task", content);
 	}
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void state(byte[] content) throws IOException {
 		ModelCheckBoundary.check("Floor.state", content);
 	}
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void architecture(byte[] content) throws IOException {
 		ModelCheckBoundary.check("Fuzzed.arc", content);
 	}

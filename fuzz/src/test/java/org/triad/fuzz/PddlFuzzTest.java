@@ -28,7 +28,7 @@ class PddlFuzzTest {
 	private static final Duration SEARCH_LIMIT = Duration.ofSeconds(2);
 	private static final long BOUND_MS = 30_000;
 
-	@FuzzTest(maxDuration = "5m")
+	@FuzzTest(maxDuration = "10m")
 	void domainAndProblem(byte[] input) {
 		String text = new String(input, StandardCharsets.UTF_8);
 		int nul = text.indexOf('\0');

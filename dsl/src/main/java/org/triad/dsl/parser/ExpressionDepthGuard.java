@@ -31,6 +31,8 @@ final class ExpressionDepthGuard {
 	private final TokenStream input;
 	private final Deque<Boolean> calls = new ArrayDeque<>();
 	private final Map<EObject, Integer> heights = new IdentityHashMap<>();
+	/** Per rule call of the grammar: the nesting caller's name, or "" when the call does not nest. */
+	private final Map<EObject, String> callers = new IdentityHashMap<>();
 	private int nesting;
 
 	ExpressionDepthGuard(TokenStream input) {
@@ -39,8 +41,8 @@ final class ExpressionDepthGuard {
 
 	/** Before the generated parser enters a rule; throws instead when that would nest too deep. */
 	void enteringRule(EObject grammarElement) {
-		String caller = nestingCaller(grammarElement);
-		boolean nests = caller != null;
+		String caller = callers.computeIfAbsent(grammarElement, ExpressionDepthGuard::nestingCaller);
+		boolean nests = !caller.isEmpty();
 		if (nests && nesting >= ExpressionLimits.MAX_NESTING) {
 			ExpressionTooDeepException tooDeep = new ExpressionTooDeepException(input, "the expression nests more than "
 					+ ExpressionLimits.MAX_NESTING + " levels of parentheses, negations and call arguments");
@@ -91,7 +93,7 @@ final class ExpressionDepthGuard {
 		return heights.getOrDefault(e, 1);
 	}
 
-	/** The rule that calls a nested expression, or null when the call does not nest one. */
+	/** The rule that calls a nested expression, or "" when the call does not nest one. */
 	private static String nestingCaller(EObject grammarElement) {
 		if (grammarElement instanceof RuleCall call && call.getRule() instanceof ParserRule rule) {
 			String caller = GrammarUtil.containingRule(call).getName();
@@ -100,9 +102,9 @@ final class ExpressionDepthGuard {
 				case "Not" -> caller.equals("Not");
 				default -> false;
 			};
-			return nests ? caller : null;
+			return nests ? caller : "";
 		}
-		return null;
+		return "";
 	}
 
 	/**
