@@ -135,7 +135,8 @@ final class LanguageServerSession implements AutoCloseable {
 		result.addAll(jul.take());
 		synchronized (stderr) {
 			String err = stderr.toString(StandardCharsets.UTF_8);
-			if (!err.isBlank()) {
+			// the fuzzer itself reports on stderr ("INFO: ..."); what the server must not print is a stack trace
+			if (err.contains("\tat ") || err.contains("Exception") || err.contains("SEVERE") || err.contains("ERROR")) {
 				result.add("stderr: " + err);
 			}
 			stderr.reset();

@@ -21,9 +21,9 @@ import org.triad.dsl.triad.Expression;
  * error recovery then skips the rest of the too-deep part like any syntax error.
  * <p>
  * Nesting counts calls of the rule {@code Expression} from inside an expression (parentheses, call
- * arguments) and of {@code Not} from {@code Not} (each {@code !} after the first). Operator chains are measured as
- * the height of the tree built so far, which the actions {@code {BinaryExpression.left=current}}
- * extend by one on top of their left operand.
+ * arguments) and of {@code Not} from {@code Not} (each {@code !} after the first). Operator chains
+ * are measured as the height of the tree built so far, which the actions
+ * {@code {BinaryExpression.left=current}} extend by one on top of their left operand.
  */
 final class ExpressionDepthGuard {
 	private static final Set<String> END = Set.of(")", ",", ";", "}");
@@ -46,7 +46,7 @@ final class ExpressionDepthGuard {
 		if (nests && nesting >= ExpressionLimits.MAX_NESTING) {
 			ExpressionTooDeepException tooDeep = new ExpressionTooDeepException(input, "the expression nests more than "
 					+ ExpressionLimits.MAX_NESTING + " levels of parentheses, negations and call arguments");
-			// parentheses and calls stop before their closing parenthesis: it goes with the skipped part
+			// a parenthesis or call that gives up never matches its closing parenthesis: it goes with the skipped part
 			skipRestOfExpression(!caller.equals("Not"));
 			throw ExpressionDepthGuard.<RuntimeException>unchecked(tooDeep);
 		}
