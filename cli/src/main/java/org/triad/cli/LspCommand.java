@@ -2,7 +2,7 @@ package org.triad.cli;
 
 import java.util.concurrent.Callable;
 
-import org.eclipse.xtext.ide.server.ServerLauncher;
+import org.triad.dsl.ide.server.TriadServerLauncher;
 
 import picocli.CommandLine.Command;
 
@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
 public final class LspCommand implements Callable<Integer> {
 	@Override
 	public Integer call() {
-		ServerLauncher.main(new String[0]);
+		TriadServerLauncher.main(new String[0]);
 		return 0;
 	}
 }

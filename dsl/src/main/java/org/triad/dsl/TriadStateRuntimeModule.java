@@ -1,11 +1,20 @@
 package org.triad.dsl;
 
+import org.eclipse.xtext.parser.IParser;
+import org.triad.dsl.parser.TriadStateDepthLimitedParser;
+
 import com.google.inject.Binder;
 
-/** Runtime bindings of the .state language: the Triad-wide ones, in place of Xtext's default scoping delegate. */
+/** Runtime bindings of the .state language: the Triad-wide ones, in place of Xtext's default scoping delegate;
+ * a parser that stops at the expression depth limits. */
 public class TriadStateRuntimeModule extends AbstractTriadStateRuntimeModule {
 	@Override
 	public void configureIScopeProviderDelegate(Binder binder) {
 		binder.install(new TriadSharedBindings());
+	}
+
+	@Override
+	public Class<? extends IParser> bindIParser() {
+		return TriadStateDepthLimitedParser.class;
 	}
 }

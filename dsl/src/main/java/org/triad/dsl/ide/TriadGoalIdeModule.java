@@ -1,5 +1,8 @@
 package org.triad.dsl.ide;
 
+import org.eclipse.xtext.ide.editor.contentassist.antlr.IContentAssistParser;
+import org.triad.dsl.ide.contentassist.TriadGoalDepthSafeContentAssistParser;
+
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 
 
@@ -7,5 +10,10 @@ import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 public class TriadGoalIdeModule extends AbstractTriadGoalIdeModule {
 	public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
 		return TriadContentProposalProvider.class;
+	}
+
+	@Override
+	public Class<? extends IContentAssistParser> bindIContentAssistParser() {
+		return TriadGoalDepthSafeContentAssistParser.class;
 	}
 }

@@ -37,6 +37,12 @@ public final class CommonIssueCodes {
 	/** A property call argument whose type does not fit the parameter. */
 	public static final String ARGUMENT_TYPE = "expr.argument-type";
 
+	/**
+	 * An expression deeper than the parser reads ({@link org.triad.dsl.parser.ExpressionLimits}):
+	 * nested parentheses, negations or call arguments, or a chain of operators, past the limit.
+	 */
+	public static final String EXPRESSION_TOO_DEEP = "expr.too-deep";
+
 	/** Two parameters of one property, action, goal or task with the same name. */
 	public static final String DUPLICATE_PARAMETER = "common.duplicate-parameter";
 	/** Two elements of the application (class diagrams, actors, goals, tasks, situations) with the same name. */

@@ -1,0 +1,90 @@
+package org.triad.fuzz;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Supplier;
+
+import org.eclipse.lsp4j.DidChangeTextDocumentParams;
+import org.eclipse.lsp4j.DidOpenTextDocumentParams;
+import org.eclipse.lsp4j.Position;
+import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
+import org.eclipse.lsp4j.TextDocumentItem;
+import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
+import org.junit.jupiter.api.AfterAll;
+
+import com.code_intelligence.jazzer.junit.FuzzTest;
+
+/**
+ * The language server's document handling: an editor buffer of one of the model languages (chosen
+ * by the input's first byte) changes to arbitrary text; the server re-reads it and answers the
+ * requests an editor sends while typing (completion, hover, definition, highlights, symbols,
+ * folding, formatting, semantic tokens) with results or proper errors, and logs nothing as an error.
+ * Seeds: the example models, each behind its language's byte
+ * ({@code src/test/resources/org/triad/fuzz/LanguageServerFuzzTestInputs/editedDocument/}).
+ */
+class LanguageServerFuzzTest {
+	static final List<String> LANGUAGES = List.of("cd", "actor", "goal", "task", "state", "arc");
+	private static final List<String> WHILE_TYPING = List.of("textDocument/completion", "textDocument/hover",
+			"textDocument/definition", "textDocument/documentHighlight", "textDocument/documentSymbol",
+			"textDocument/foldingRange", "textDocument/formatting", "textDocument/semanticTokens/full");
+
+	private static LanguageServerSession session;
+	private static final int[] versions = new int[LANGUAGES.size()];
+
+	@FuzzTest(maxDuration = "10m")
+	void editedDocument(byte[] input) throws Exception {
+		if (input.length == 0) {
+			return;
+		}
+		LanguageServerSession s = session();
+		int language = Byte.toUnsignedInt(input[0]) % LANGUAGES.size();
+		String text = new String(Arrays.copyOfRange(input, 1, input.length), StandardCharsets.UTF_8);
+		String uri = LanguageServerSession.uri(s.workspace.resolve("Edited." + LANGUAGES.get(language)));
+		int version = ++versions[language];
+		if (version == 1) {
+			s.server.getTextDocumentService().didOpen(new DidOpenTextDocumentParams(new TextDocumentItem(uri, LANGUAGES.get(language), 1, text)));
+		} else {
+			s.server.getTextDocumentService().didChange(new DidChangeTextDocumentParams(new VersionedTextDocumentIdentifier(uri, version),
+					List.of(new TextDocumentContentChangeEvent(text))));
+		}
+		List<String> problems = new ArrayList<>();
+		for (Position at : places(text)) {
+			Map<String, Supplier<CompletableFuture<?>>> requests = EditorRequests.at(s, uri, at, new Position(at.getLine() + 1, 0));
+			for (String method : WHILE_TYPING) {
+				s.answer(method, requests.get(method).get());
+			}
+			problems.addAll(s.takeProblems());
+		}
+		assertEquals(List.of(), problems);
+	}
+
+	/** Where the cursor is: the start, the middle of the text, its end. */
+	private static List<Position> places(String text) {
+		String[] lines = text.split("\n", -1);
+		int mid = lines.length / 2;
+		return List.of(new Position(0, 0), new Position(mid, lines[mid].length() / 2),
+				new Position(lines.length - 1, lines[lines.length - 1].length()));
+	}
+
+	private static synchronized LanguageServerSession session() throws Exception {
+		if (session == null) {
+			session = new LanguageServerSession();
+			session.takeProblems();
+		}
+		return session;
+	}
+
+	@AfterAll
+	static void stop() throws Exception {
+		if (session != null) {
+			session.close();
+			session = null;
+		}
+	}
+}
