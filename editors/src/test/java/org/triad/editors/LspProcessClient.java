@@ -1,0 +1,76 @@
+package org.triad.editors;
+
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Future;
+
+import org.eclipse.lsp4j.Diagnostic;
+import org.eclipse.lsp4j.MessageActionItem;
+import org.eclipse.lsp4j.MessageParams;
+import org.eclipse.lsp4j.PublishDiagnosticsParams;
+import org.eclipse.lsp4j.ShowMessageRequestParams;
+import org.eclipse.lsp4j.jsonrpc.Launcher;
+import org.eclipse.lsp4j.launch.LSPLauncher;
+import org.eclipse.lsp4j.services.LanguageClient;
+import org.eclipse.lsp4j.services.LanguageServer;
+
+/** An LSP client talking to a language server process over its standard input and output. */
+final class LspProcessClient implements LanguageClient, AutoCloseable {
+	private final Map<String, List<Diagnostic>> diagnostics = new ConcurrentHashMap<>();
+	private final LanguageServer server;
+	private final Future<Void> listening;
+
+	LspProcessClient(Process process) {
+		Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(this, process.getInputStream(), process.getOutputStream());
+		listening = launcher.startListening();
+		server = launcher.getRemoteProxy();
+	}
+
+	LanguageServer server() {
+		return server;
+	}
+
+	/** Waits (at most a minute) for diagnostics of a file whose URI ends with {@code fileName}; the first one's code. */
+	synchronized String awaitFirstCode(String fileName) throws InterruptedException {
+		long end = System.currentTimeMillis() + 60_000;
+		while (System.currentTimeMillis() < end) {
+			for (Map.Entry<String, List<Diagnostic>> e : diagnostics.entrySet()) {
+				if (e.getKey().endsWith("/" + fileName) && !e.getValue().isEmpty()) {
+					return e.getValue().get(0).getCode().getLeft();
+				}
+			}
+			wait(200);
+		}
+		return null;
+	}
+
+	@Override
+	public synchronized void publishDiagnostics(PublishDiagnosticsParams params) {
+		diagnostics.put(params.getUri(), params.getDiagnostics());
+		notifyAll();
+	}
+
+	@Override
+	public void telemetryEvent(Object object) {
+	}
+
+	@Override
+	public void showMessage(MessageParams messageParams) {
+	}
+
+	@Override
+	public CompletableFuture<MessageActionItem> showMessageRequest(ShowMessageRequestParams requestParams) {
+		return CompletableFuture.completedFuture(null);
+	}
+
+	@Override
+	public void logMessage(MessageParams message) {
+	}
+
+	@Override
+	public void close() {
+		listening.cancel(true);
+	}
+}
