@@ -19,6 +19,7 @@ import org.eclipse.lsp4j.services.LanguageServer;
 /** An LSP client talking to a language server process over its standard input and output. */
 final class LspProcessClient implements LanguageClient, AutoCloseable {
 	private final Map<String, List<Diagnostic>> diagnostics = new ConcurrentHashMap<>();
+	private final Map<String, Integer> publications = new ConcurrentHashMap<>();
 	private final LanguageServer server;
 	private final Future<Void> listening;
 
@@ -46,9 +47,33 @@ final class LspProcessClient implements LanguageClient, AutoCloseable {
 		return null;
 	}
 
+	/** How many times diagnostics of {@code uri} were published so far. */
+	int publications(String uri) {
+		return publications.getOrDefault(uri, 0);
+	}
+
+	/** Waits (at most a minute) until diagnostics of {@code uri} are published more than {@code seen} times. */
+	synchronized void awaitPublication(String uri, int seen) throws InterruptedException {
+		long end = System.currentTimeMillis() + 60_000;
+		while (publications(uri) <= seen) {
+			long left = end - System.currentTimeMillis();
+			if (left <= 0) {
+				throw new IllegalStateException("no diagnostics for " + uri + " within a minute");
+			}
+			wait(Math.min(left, 50));
+		}
+	}
+
+	/** Error diagnostics currently published, over all files. */
+	int errorCount() {
+		return (int) diagnostics.values().stream().flatMap(List::stream)
+				.filter(d -> d.getSeverity() == org.eclipse.lsp4j.DiagnosticSeverity.Error).count();
+	}
+
 	@Override
 	public synchronized void publishDiagnostics(PublishDiagnosticsParams params) {
 		diagnostics.put(params.getUri(), params.getDiagnostics());
+		publications.merge(params.getUri(), 1, Integer::sum);
 		notifyAll();
 	}
 

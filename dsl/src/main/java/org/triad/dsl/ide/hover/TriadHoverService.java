@@ -2,6 +2,8 @@ package org.triad.dsl.ide.hover;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.lsp4j.MarkupContent;
+import org.eclipse.xtext.ide.server.hover.HoverContext;
 import org.eclipse.xtext.ide.server.hover.HoverService;
 
 import com.google.inject.Inject;
@@ -26,6 +28,13 @@ public class TriadHoverService extends HoverService {
 			b.append("\n\n").append(doc);
 		}
 		return b.toString();
+	}
+
+	/** Nothing to show is no hover at all, rather than an empty one. */
+	@Override
+	protected MarkupContent getMarkupContent(HoverContext context) {
+		String contents = getContents(context.getElement());
+		return contents.isEmpty() ? null : toMarkupContent(getKind(context), contents);
 	}
 
 	/** The editor language id of the element's file (triad-goal, ...), so fenced code is coloured. */
