@@ -64,10 +64,11 @@ final class LspProcessClient implements LanguageClient, AutoCloseable {
 		}
 	}
 
-	/** Error diagnostics currently published, over all files. */
-	int errorCount() {
-		return (int) diagnostics.values().stream().flatMap(List::stream)
-				.filter(d -> d.getSeverity() == org.eclipse.lsp4j.DiagnosticSeverity.Error).count();
+	/** Error diagnostics currently published, over all files, as "uri: code message". */
+	List<String> errors() {
+		return diagnostics.entrySet().stream().flatMap(e -> e.getValue().stream()
+				.filter(d -> d.getSeverity() == org.eclipse.lsp4j.DiagnosticSeverity.Error)
+				.map(d -> e.getKey() + ": " + d.getCode().getLeft() + " " + d.getMessage().getLeft())).toList();
 	}
 
 	@Override

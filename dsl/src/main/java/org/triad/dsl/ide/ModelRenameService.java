@@ -2,19 +2,19 @@ package org.triad.dsl.ide;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ExecutionException;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.lsp4j.WorkspaceEdit;
-import org.eclipse.xtext.EcoreUtil2;
-import java.util.concurrent.ExecutionException;
-
 import org.eclipse.lsp4j.jsonrpc.ResponseErrorException;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseError;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
-import org.eclipse.xtext.resource.XtextResource;
+import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.ide.server.rename.IRenameService2;
 import org.eclipse.xtext.ide.server.rename.RenameService2;
 import org.eclipse.xtext.resource.IEObjectDescription;
+import org.eclipse.xtext.resource.XtextResource;
 import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.util.SimpleAttributeResolver;
 import org.triad.dsl.arc.ArcNamedElement;
@@ -46,7 +46,7 @@ import com.google.inject.Inject;
  */
 public class ModelRenameService extends RenameService2 {
 	private static final TriadPackage P = TriadPackage.eINSTANCE;
-	private static final java.util.Set<String> KEYWORDS = java.util.Set.of("domain", "robot", "world", "property", "action", "pre", "post",
+	private static final Set<String> KEYWORDS = Set.of("domain", "robot", "world", "property", "action", "pre", "post",
 			"goal", "task", "state", "classdiagram", "class", "abstract", "extends", "enum", "true", "false", "boolean", "int", "double",
 			"String", "component", "port", "in", "out", "automaton", "initial", "package", "import", "faults");
 
