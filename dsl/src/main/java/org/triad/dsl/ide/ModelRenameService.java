@@ -146,7 +146,7 @@ public class ModelRenameService extends RenameService2 {
 			return List.of();
 		}
 		List<IEObjectDescription> result = new ArrayList<>();
-		var descriptions = index.getResourceDescriptions(e.eResource().getResourceSet());
+		var descriptions = index.getResourceDescriptions(e.eResource());
 		for (var type : List.of(P.getClassDiagram(), P.getActor(), P.getGoal(), P.getTask(), P.getSituation())) {
 			descriptions.getExportedObjectsByType(type).forEach(result::add);
 		}

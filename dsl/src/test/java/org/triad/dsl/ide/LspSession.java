@@ -84,6 +84,15 @@ final class LspSession implements AutoCloseable {
 			return await(uri, ds -> ds.stream().anyMatch(d -> d.getCode() != null && code.equals(d.getCode().getLeft())));
 		}
 
+		/** Waits until diagnostics of {@code uri} were published at all (possibly none); returns them. */
+		synchronized List<Diagnostic> awaitPublished(String uri) throws InterruptedException {
+			long end = System.currentTimeMillis() + TIMEOUT_S * 1000;
+			while (!diagnostics.containsKey(uri) && System.currentTimeMillis() < end) {
+				wait(200);
+			}
+			return diagnostics.getOrDefault(uri, List.of());
+		}
+
 		synchronized void awaitRegistration() throws InterruptedException {
 			long end = System.currentTimeMillis() + TIMEOUT_S * 1000;
 			while (registrations.isEmpty() && System.currentTimeMillis() < end) {

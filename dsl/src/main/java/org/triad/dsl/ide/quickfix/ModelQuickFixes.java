@@ -209,7 +209,7 @@ public class ModelQuickFixes implements ICodeActionService2 {
 		int at = document.getContents().lastIndexOf('\n', first.getOffset() - 1) + 1;
 		Position position = document.getPosition(at);
 		Set<String> diagrams = new LinkedHashSet<>();
-		for (IEObjectDescription cd : index.getResourceDescriptions(resource.getResourceSet()).getExportedObjectsByType(P.getClassDiagram())) {
+		for (IEObjectDescription cd : index.getResourceDescriptions(resource).getExportedObjectsByType(P.getClassDiagram())) {
 			diagrams.add(cd.getName().toString());
 		}
 		for (String cd : diagrams) {
