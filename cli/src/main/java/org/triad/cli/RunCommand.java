@@ -56,6 +56,7 @@ public final class RunCommand implements Callable<Integer> {
 		ModelSession session = opened.session();
 		State s = opened.state();
 		ModelSession.Call call = ModelSession.parseCall(task, s);
+		TaskArgumentCheck.check(session.schema, call.name(), call.args());
 		ModelTask instance = new ModelTask(session.schema, call.name(), call.args());
 		DryRunWorld world = new DryRunWorld(session.schema, s);
 		for (String f : failures) {

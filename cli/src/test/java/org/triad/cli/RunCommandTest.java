@@ -79,4 +79,15 @@ class RunCommandTest {
 		assertEquals(2, unknownAction.code());
 		assertTrue(unknownAction.err().contains("no action 'fly'"), unknownAction.err());
 	}
+
+	@Test
+	void anArgumentOfTheWrongTypeIsRefusedAtOnceNamingTheParameterAndBothTypes() {
+		Result r = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "Guide(gauze, lobby)");
+		assertEquals(2, r.code(), String.join("\n", r.lines()) + r.err());
+		assertEquals("triad run: task Guide: parameter 'p' is a Person, but 'gauze' is an Item", r.err().strip());
+		assertEquals(0, r.count("plan"), "nothing was planned");
+		Result literal = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "GoTo(3)");
+		assertEquals(2, literal.code());
+		assertEquals("triad run: task GoTo: parameter 'dst' is a Room, but '3' is an int", literal.err().strip());
+	}
 }

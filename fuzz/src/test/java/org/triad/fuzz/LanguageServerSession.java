@@ -38,7 +38,7 @@ import org.eclipse.lsp4j.launch.LSPLauncher;
 import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
-import org.triad.dsl.ide.server.GuardedServerModule;
+import org.triad.dsl.ide.server.TriadServerModule;
 import org.triad.dsl.ide.server.TriadServerLauncher;
 
 import com.google.inject.Guice;
@@ -82,7 +82,7 @@ final class LanguageServerSession implements AutoCloseable {
 		PipedOutputStream clientOut = new PipedOutputStream(serverIn);
 		PipedInputStream clientIn = new PipedInputStream(1 << 20);
 		PipedOutputStream serverOut = new PipedOutputStream(clientIn);
-		LanguageServerImpl impl = Guice.createInjector(new GuardedServerModule()).getInstance(LanguageServerImpl.class);
+		LanguageServerImpl impl = Guice.createInjector(new TriadServerModule()).getInstance(LanguageServerImpl.class);
 		Launcher<LanguageClient> serverLauncher = TriadServerLauncher.createLauncher(impl, serverIn, serverOut, true, null);
 		serverListening = serverLauncher.startListening();
 		Launcher<LanguageServer> clientLauncher = LSPLauncher.createClientLauncher(new QuietClient(), clientIn, clientOut);

@@ -4,6 +4,7 @@ import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
+import org.eclipse.xtext.Assignment;
 import org.eclipse.xtext.CrossReference;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.GrammarUtil;
@@ -34,6 +35,9 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 
 	@Override
 	protected void _createProposals(CrossReference crossReference, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {
+		if (continuesAName(context)) {
+			return;
+		}
 		EReference ref = GrammarUtil.getReference(crossReference);
 		String qualifier = qualifierBeforeDot(context);
 		if (ref == P.getPropertyCall_Property()) {
@@ -59,10 +63,36 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 
 	@Override
 	protected void _createProposals(Keyword keyword, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {
-		// nothing to add after 'X.', nor a keyword that is already typed in full
-		if (qualifierBeforeDot(context) == null && !keyword.getValue().equals(context.getPrefix())) {
+		// nothing to add after 'X.', nor a keyword that is already typed in full, nor an operator
+		// right after a name being typed (that name is not finished yet)
+		if (qualifierBeforeDot(context) == null && !keyword.getValue().equals(context.getPrefix()) && !continuesAName(context)) {
 			super._createProposals(keyword, context, acceptor);
 		}
+	}
+
+	/**
+	 * Xtext's placeholders for literals and declared names ({@code value}, {@code "value"},
+	 * {@code name}) are not proposals a model author can use: only references are offered.
+	 */
+	@Override
+	protected void _createProposals(Assignment assignment, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {
+		if (assignment.getTerminal() instanceof CrossReference) {
+			super._createProposals(assignment, context, acceptor);
+		}
+	}
+
+	/**
+	 * Whether the cursor sits right after a letter or digit with nothing typed in this context:
+	 * Xtext then also asks what could follow the partial name as if it were complete, and
+	 * operators or other names do not belong directly after it.
+	 */
+	private static boolean continuesAName(ContentAssistContext context) {
+		if (!context.getPrefix().isEmpty() || context.getRootNode() == null || context.getOffset() == 0) {
+			return false;
+		}
+		String text = context.getRootNode().getText();
+		int offset = context.getOffset();
+		return offset <= text.length() && Character.isJavaIdentifierPart(text.charAt(offset - 1));
 	}
 
 	private void propose(List<? extends NamedElement> elements, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {

@@ -23,7 +23,7 @@ public class TriadServerLauncher extends ServerLauncher {
 	private LanguageServerImpl languageServer;
 
 	public static void main(String[] args) {
-		launch(TriadServerLauncher.class.getName(), args, new GuardedServerModule());
+		launch(TriadServerLauncher.class.getName(), args, new TriadServerModule());
 	}
 
 	/** The server's end of a connection, as {@code triad lsp} and the tests make it. */

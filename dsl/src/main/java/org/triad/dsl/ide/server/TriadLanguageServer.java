@@ -1,0 +1,151 @@
+package org.triad.dsl.ide.server;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.lsp4j.ClientCapabilities;
+import org.eclipse.lsp4j.DeclarationParams;
+import org.eclipse.lsp4j.DefinitionParams;
+import org.eclipse.lsp4j.DidChangeWatchedFilesRegistrationOptions;
+import org.eclipse.lsp4j.FileSystemWatcher;
+import org.eclipse.lsp4j.ImplementationParams;
+import org.eclipse.lsp4j.InitializeParams;
+import org.eclipse.lsp4j.InitializedParams;
+import org.eclipse.lsp4j.Location;
+import org.eclipse.lsp4j.LocationLink;
+import org.eclipse.lsp4j.Registration;
+import org.eclipse.lsp4j.RegistrationParams;
+import org.eclipse.lsp4j.ServerCapabilities;
+import org.eclipse.lsp4j.TypeDefinitionParams;
+import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.eclipse.xtext.ide.server.DocumentExtensions;
+import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
+import org.eclipse.xtext.resource.XtextResource;
+import org.triad.dsl.TriadLanguages;
+import org.triad.dsl.arc.Subcomponent;
+import org.triad.dsl.triad.Attribute;
+import org.triad.dsl.triad.DomainTypeRef;
+import org.triad.dsl.triad.ObjectDeclaration;
+import org.triad.dsl.triad.Parameter;
+import org.triad.dsl.triad.Property;
+import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.triad.TypeRef;
+import org.triad.dsl.triad.ValueRef;
+
+
+/**
+ * Xtext's language server with what editors ask of it beyond Xtext's defaults: it watches the
+ * model files on disk (so a model changed or created outside the editor is re-checked), and it
+ * answers type-definition, declaration and implementation requests instead of failing them.
+ */
+public class TriadLanguageServer extends org.eclipse.xtext.ide.server.LanguageServerImpl {
+	/** The registration id of the file watcher, so a client can tell it apart. */
+	public static final String WATCHER_REGISTRATION = "triad-model-files";
+
+	private volatile ClientCapabilities clientCapabilities;
+
+	@Override
+	protected ServerCapabilities createServerCapabilities(InitializeParams params) {
+		clientCapabilities = params == null ? null : params.getCapabilities();
+		ServerCapabilities capabilities = super.createServerCapabilities(params);
+		capabilities.setTypeDefinitionProvider(true);
+		capabilities.setDeclarationProvider(true);
+		capabilities.setImplementationProvider(true);
+		return capabilities;
+	}
+
+	@Override
+	public void initialized(InitializedParams params) {
+		super.initialized(params);
+		if (supportsWatcherRegistration()) {
+			String glob = "**/*.{" + String.join(",", TriadLanguages.EXTENSIONS) + "}";
+			DidChangeWatchedFilesRegistrationOptions options = new DidChangeWatchedFilesRegistrationOptions(
+					List.of(new FileSystemWatcher(Either.forLeft(glob))));
+			getLanguageClient().registerCapability(
+					new RegistrationParams(List.of(new Registration(WATCHER_REGISTRATION, "workspace/didChangeWatchedFiles", options))));
+		}
+	}
+
+	private boolean supportsWatcherRegistration() {
+		ClientCapabilities c = clientCapabilities;
+		return c != null && c.getWorkspace() != null && c.getWorkspace().getDidChangeWatchedFiles() != null
+				&& Boolean.TRUE.equals(c.getWorkspace().getDidChangeWatchedFiles().getDynamicRegistration());
+	}
+
+	/** The declaration of the type of the value under the cursor (a parameter's, property's, attribute's or object's class). */
+	@Override
+	public CompletableFuture<Either<List<? extends Location>, List<? extends LocationLink>>> typeDefinition(TypeDefinitionParams params) {
+		URI uri = getURI(params.getTextDocument());
+		return getRequestManager().runRead(cancel -> Either.forLeft(getWorkspaceManager().doRead(uri,
+				(document, resource) -> typeLocations(uri, resource, document.getOffSet(params.getPosition())))));
+	}
+
+	/** In models a name's declaration is its definition. */
+	@Override
+	public CompletableFuture<Either<List<? extends Location>, List<? extends LocationLink>>> declaration(DeclarationParams params) {
+		DefinitionParams definition = new DefinitionParams(params.getTextDocument(), params.getPosition());
+		return definition(definition);
+	}
+
+	/**
+	 * Models declare and define in one place, and what implements a robot's actions is Java code the
+	 * language server does not see: the answer is the definition, so "go to implementation" still
+	 * lands on the element rather than failing.
+	 */
+	@Override
+	public CompletableFuture<Either<List<? extends Location>, List<? extends LocationLink>>> implementation(ImplementationParams params) {
+		DefinitionParams definition = new DefinitionParams(params.getTextDocument(), params.getPosition());
+		return definition(definition);
+	}
+
+	private List<Location> typeLocations(URI uri, XtextResource resource, int offset) {
+		EObjectAtOffsetHelper elementAtOffset = getService(uri, EObjectAtOffsetHelper.class);
+		DocumentExtensions documentExtensions = getService(uri, DocumentExtensions.class);
+		if (resource == null || elementAtOffset == null || documentExtensions == null) {
+			return List.of();
+		}
+		EObject element = elementAtOffset.resolveCrossReferencedElementAt(resource, offset);
+		if (element == null) {
+			element = elementAtOffset.resolveElementAt(resource, offset);
+		}
+		EObject type = typeOf(element);
+		if (type == null || type.eIsProxy() || type.eResource() == null) {
+			return List.of();
+		}
+		Location location = documentExtensions.newLocation(type);
+		return location == null ? List.of() : List.of(location);
+	}
+
+	/** The class or enumeration an element's values have, or (for a subcomponent) its component type. */
+	static EObject typeOf(EObject e) {
+		if (e instanceof PropertyCall call) {
+			return typeOf(call.getProperty());
+		}
+		if (e instanceof ValueRef ref) {
+			return typeOf(ref.getValue());
+		}
+		if (e instanceof Parameter p) {
+			return domainType(p.getType());
+		}
+		if (e instanceof Property p) {
+			return domainType(p.getType());
+		}
+		if (e instanceof Attribute a) {
+			return domainType(a.getType());
+		}
+		if (e instanceof SituationObject o && o.eContainer() instanceof ObjectDeclaration d) {
+			return d.getType();
+		}
+		if (e instanceof Subcomponent s) {
+			return s.getType();
+		}
+		return null;
+	}
+
+	private static EObject domainType(TypeRef ref) {
+		return ref instanceof DomainTypeRef d ? d.getType() : null;
+	}
+}
