@@ -2,6 +2,7 @@ package org.triad.generator.java;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Collectors;
 
@@ -48,7 +49,10 @@ public class TriadApplicationGenerator extends AbstractGenerator {
 		app.setDomain((ClassDiagram) input.getContents().get(0));
 		List<Actor> robots = new ArrayList<>();
 		List<Actor> worlds = new ArrayList<>();
-		for (Resource r : input.getResourceSet().getResources()) {
+		// in file order, as ApplicationLoader loads them, so Maven's output equals ./triad generate's and Gradle's
+		List<Resource> resources = new ArrayList<>(input.getResourceSet().getResources());
+		resources.sort(Comparator.comparing(TriadApplicationGenerator::fileOrder));
+		for (Resource r : resources) {
 			for (EObject root : r.getContents()) {
 				if (root instanceof ActorModel m && m.getActor() != null) {
 					(m.getActor().getKind() == ActorKind.ROBOT ? robots : worlds).add(m.getActor());
@@ -64,6 +68,10 @@ public class TriadApplicationGenerator extends AbstractGenerator {
 		app.setRobot(theOne(robots, "robot", app));
 		app.setWorld(theOne(worlds, "world", app));
 		return app;
+	}
+
+	private static String fileOrder(Resource r) {
+		return r.getURI().isFile() ? r.getURI().toFileString() : r.getURI().toString();
 	}
 
 	private static Actor theOne(List<Actor> actors, String kind, Application app) {
