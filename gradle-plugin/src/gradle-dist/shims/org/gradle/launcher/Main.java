@@ -36,8 +36,15 @@ import org.gradle.tooling.internal.provider.ForwardStdInToThisProcess;
 import org.gradle.tooling.internal.provider.RunInProcess;
 import org.gradle.tooling.internal.provider.action.ExecuteBuildAction;
 
+/**
+ * The entry point of the module {@code gradle-gradle-cli}, which {@code dev.gradleplugins:gradle-api}
+ * lacks: {@code GradleMain} bootstraps Gradle's class loaders and calls {@link #run}. Parses the command
+ * line with Gradle's own converters and runs the build in this JVM, as Gradle's {@code --no-daemon}
+ * does when the JVM fits (there is no daemon to start: its entry point is not in gradle-api either).
+ */
 public class Main {
-	public void run(String[] args) throws Exception {
+	public void run(String[] args) {
+		// Gradle's logging owns System.err once started: a failure before the build reports itself goes to the raw stream
 		java.io.PrintStream raw = new java.io.PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true);
 		try {
 			doRun(args);
@@ -52,7 +59,9 @@ public class Main {
 		LoggingManagerInternal loggingManager = logging.getFactory(LoggingManagerInternal.class).create();
 		loggingManager.setLevelInternal(LogLevel.LIFECYCLE);
 		loggingManager.start();
-		File userHome = new File(System.getProperty("user.home"), ".gradle");
+		// native services live in the user home, which must be known before the command line is parsed
+		String env = System.getenv("GRADLE_USER_HOME");
+		File userHome = env != null ? new File(env) : new File(System.getProperty("user.home"), ".gradle");
 		for (int i = 0; i < args.length - 1; i++) {
 			if (args[i].equals("-g") || args[i].equals("--gradle-user-home")) {
 				userHome = new File(args[i + 1]).getAbsoluteFile();
@@ -69,8 +78,8 @@ public class Main {
 		try {
 			ParsedCommandLine commandLine = parser.parse(Arrays.asList(args));
 			parameters = converter.convertParameters(commandLine, null);
-		} catch (Exception e) {
-			System.err.println(e.getMessage());
+		} catch (org.gradle.cli.CommandLineArgumentException e) {
+			System.err.println("gradle: " + e.getMessage());
 			System.exit(2);
 			return;
 		}
