@@ -39,9 +39,10 @@ import javax.tools.ToolProvider;
  * process's, are module jars alone);
  * <li>the unrelocated libraries (Groovy, Kotlin's standard library) from ARTIFACTS_DIR, and an empty
  * placeholder for every relocated one, so the module registry finds each name it looks for;
- * <li>the two modules the jar lacks, built from {@code shims/}: {@code gradle-gradle-cli} (the
- * command-line entry, running the build in the launching JVM) and {@code gradle-java-compiler-plugin}
- * (javac without Gradle's incremental-compilation bookkeeping, so every compileJava run is whole).
+ * <li>the modules the jar lacks, built from {@code shims/}: {@code gradle-gradle-cli} (the
+ * command-line entry, running the build in the launching JVM), {@code gradle-java-compiler-plugin}
+ * (javac without Gradle's incremental-compilation bookkeeping, so every compileJava run is whole) and
+ * {@code gradle-installation-beacon} (what {@code gradleApi()} looks for).
  * </ul>
  * No Kotlin DSL: Gradle publishes it to no registry these machines reach, so builds are Groovy scripts.
  */
@@ -88,6 +89,7 @@ public final class AssembleGradle {
 		Path shimClasses = compileShims(shims, out.resolve("shim-classes"), lib.resolve(CLASSES), artifacts);
 		moduleJar(lib, "gradle-gradle-cli", "gradle-launcher", CLASSES, classesBelow(shimClasses, "org/gradle/launcher"));
 		moduleJar(lib, "gradle-java-compiler-plugin", "", "", classesBelow(shimClasses, "org/gradle/internal/compiler"));
+		moduleJar(lib, "gradle-installation-beacon", "", "", classesBelow(shimClasses, "org/gradle/internal/installation"));
 		referencedModules.removeAll(manifests.keySet());
 		referencedModules.remove("gradle-java-compiler-plugin");
 		for (String missing : referencedModules) {
