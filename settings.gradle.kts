@@ -5,6 +5,10 @@
 pluginManagement {
     // org.triad.models, built together with the toolchain it runs (gradle-plugin/settings.gradle.kts)
     includeBuild("gradle-plugin")
+    // where the plugin's own dependencies (Xtext, EMF, ...) come from: Maven Central, not the plugin portal
+    repositories {
+        mavenCentral()
+    }
 }
 
 dependencyResolutionManagement {

@@ -4,6 +4,12 @@ val xtextVersion: String by project
 
 val mwe2: Configuration by configurations.creating
 
+configurations.all {
+    // as in Maven: Xtext runs on reload4j, and antlr-runtime's StringTemplate is unused (xtext-dev-bom's exclusions)
+    exclude(group = "log4j", module = "log4j")
+    exclude(group = "org.antlr", module = "stringtemplate")
+}
+
 dependencies {
     api(platform("org.eclipse.xtext:xtext-dev-bom:$xtextVersion"))
     api("org.eclipse.xtext:org.eclipse.xtext:$xtextVersion")
