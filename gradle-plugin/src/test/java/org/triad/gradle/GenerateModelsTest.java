@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -52,6 +53,24 @@ class GenerateModelsTest {
 		Task compileJava = project.getTasks().getByName("compileJava");
 		assertTrue(compileJava.getTaskDependencies().getDependencies(compileJava).contains(task),
 				"compileJava depends on " + compileJava.getTaskDependencies().getDependencies(compileJava));
+	}
+
+	@Test
+	void theModelFoldersAndSettingsAreTheInputsAndTheGeneratedFolderTheOutput() throws IOException {
+		Project project = modelsProject("hospital", "models/hospital");
+		TriadModelsExtension triad = project.getExtensions().getByType(TriadModelsExtension.class);
+		File refarc = ROOT.resolve("refarc/src/main/arc").toFile();
+		triad.getArchitectureLibraries().from(refarc);
+		triad.getBasePackage().set("com.example.ward");
+		GenerateModels task = generateModels(project);
+
+		// what Gradle fingerprints for its up-to-date check (HospitalGradleBuildIT sees it work in a real build)
+		Set<File> inputs = task.getInputs().getFiles().getFiles();
+		assertTrue(inputs.containsAll(Set.of(project.file("src/main/models"), project.file("src/main/arc"), refarc)), inputs.toString());
+		assertEquals(Set.of(task.getOutputDirectory().get().getAsFile()), task.getOutputs().getFiles().getFiles());
+		Map<String, Object> properties = task.getInputs().getProperties();
+		assertEquals("com.example.ward", properties.get("basePackage"));
+		assertEquals("", properties.get("architecturePackage"));
 	}
 
 	@Test
