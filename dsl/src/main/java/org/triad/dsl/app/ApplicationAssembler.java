@@ -130,7 +130,7 @@ public final class ApplicationAssembler {
 	public static Application assemble(Iterable<? extends Resource> resources) {
 		Application app = TriadFactory.eINSTANCE.createApplication();
 		List<EObject> parts = new ArrayList<>();
-		for (Resource r : resources) {
+		for (Resource r : inFileOrder(resources)) {
 			for (EObject root : r.getContents()) {
 				if (root instanceof ClassDiagram cd) {
 					parts.add(cd);
@@ -237,4 +237,12 @@ public final class ApplicationAssembler {
 		return t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
 	}
 
+
+	/** Resources sorted by their path, so every build (CLI, Maven, Gradle) lists goals and tasks in one order. */
+	private static List<Resource> inFileOrder(Iterable<? extends Resource> resources) {
+		List<Resource> sorted = new ArrayList<>();
+		resources.forEach(sorted::add);
+		sorted.sort(java.util.Comparator.comparing(r -> r.getURI().isFile() ? r.getURI().toFileString() : r.getURI().toString()));
+		return sorted;
+	}
 }

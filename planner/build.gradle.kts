@@ -1,0 +1,1 @@
+// mirrors planner/pom.xml: the PDDL planning engine, no dependencies

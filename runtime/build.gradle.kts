@@ -1,0 +1,4 @@
+// mirrors runtime/pom.xml
+dependencies {
+    api(project(":triad-planner"))
+}
