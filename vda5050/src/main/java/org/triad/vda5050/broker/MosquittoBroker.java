@@ -125,7 +125,8 @@ public final class MosquittoBroker implements AutoCloseable {
         try {
             Files.createDirectories(dir);
             Path conf = dir.resolve("mosquitto.conf");
-            Files.writeString(conf, config().replace("${port}", Integer.toString(port)).replace("${dir}", dir.toString()));
+            Files.writeString(conf, config().replace("${port}", Integer.toString(port)).replace("${dir}", dir.toString())
+                    .replace("${user}", System.getProperty("user.name")));
             process = new ProcessBuilder(List.of(executable, "-c", conf.toString()))
                     .redirectErrorStream(true)
                     .redirectOutput(dir.resolve("mosquitto.out").toFile())

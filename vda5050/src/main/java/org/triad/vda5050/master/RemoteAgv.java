@@ -122,10 +122,17 @@ public final class RemoteAgv implements FailureExplaining {
         }
     }
 
-    /** Waits until the AGV has reported a state while ONLINE; false after the online timeout. */
+    /**
+     * Waits until the AGV has reported a state while ONLINE: up to the online timeout for an AGV not heard
+     * from yet, up to the reconnect grace for one whose connection is known broken or offline.
+     */
     public boolean awaitOnline() {
+        boolean knownDown;
+        synchronized (lock) {
+            knownDown = connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE;
+        }
         return await(() -> state != null && connection != ConnectionState.CONNECTIONBROKEN && connection != ConnectionState.OFFLINE,
-                timeouts.onlineSeconds());
+                knownDown ? timeouts.reconnectGraceSeconds() : timeouts.onlineSeconds());
     }
 
     /** Drives from node {@code from} (where the AGV is) along the edge to node {@code to}: an order of two nodes and an edge. */
@@ -257,18 +264,19 @@ public final class RemoteAgv implements FailureExplaining {
                         return fail(call + " failed on AGV " + name() + ": " + o.failure());
                     }
                 }
-                if ((connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE)
-                        && connectionNanos >= sentNanos && now - connectionNanos > seconds(timeouts.reconnectGraceSeconds())) {
+                // the grace runs while this master is connected itself: after a broker restart the AGV's ONLINE comes after ours
+                if ((connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= sentNanos
+                        && link.isConnected() && now - Math.max(connectionNanos, masterReconnectNanos) > seconds(timeouts.reconnectGraceSeconds())) {
                     return fail(String.format(Locale.ROOT, "AGV %s reported %s%s during %s and did not come back within %.1f s", name(), connection,
                             connection == ConnectionState.CONNECTIONBROKEN ? " (its last will)" : "", call, timeouts.reconnectGraceSeconds()));
                 }
                 long heard = Math.max(Math.max(stateNanos, sentNanos), masterReconnectNanos);
                 if (link.isConnected() && now - heard > seconds(timeouts.stateSeconds())) {
-                    return fail(String.format(Locale.ROOT, "no state from AGV %s for %.1f s during %s (timeout)", name(), timeouts.stateSeconds(),
+                    return giveUp(orderId, String.format(Locale.ROOT, "no state from AGV %s for %.1f s during %s (timeout)", name(), timeouts.stateSeconds(),
                             call));
                 }
                 if (now > deadline) {
-                    return fail(String.format(Locale.ROOT, "%s on AGV %s did not finish within %.1f s (timeout)", call, name(),
+                    return giveUp(orderId, String.format(Locale.ROOT, "%s on AGV %s did not finish within %.1f s (timeout)", call, name(),
                             timeouts.actionSeconds()));
                 }
                 try {
@@ -284,6 +292,16 @@ public final class RemoteAgv implements FailureExplaining {
     private boolean fail(String why) {
         lastFailure = why;
         return false;
+    }
+
+    /** Master control gave up on an order the AGV may still be executing (silence, timeout): it should stop it. */
+    private boolean giveUp(String orderId, String why) {
+        if (orderId != null) {
+            Action cancel = action("cancelOrder", Map.of());
+            publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
+                    manufacturer, serialNumber, List.of(cancel)));
+        }
+        return fail(why);
     }
 
     private boolean await(BooleanSupplier condition, double seconds) {
