@@ -356,7 +356,7 @@ public final class SimulatedAgv implements AutoCloseable {
         WayPoint src = objects.waypoint(e.startNodeId());
         WayPoint dst = objects.waypoint(e.endNodeId());
         for (Action a : e.actions()) {
-            String person = String.valueOf(a.parameter("personId"));
+            String person = parameter(a, "personId", HospitalFloor.PEOPLE.keySet());
             if (a.actionType().equals("guide")) {
                 return hospital.courier().guide(objects.person(person), src, dst);
             }
@@ -374,9 +374,9 @@ public final class SimulatedAgv implements AutoCloseable {
             String why;
             try {
                 ok = switch (a.actionType()) {
-                    case "pick" -> hospital.courier().pick(objects.item(String.valueOf(a.parameter("loadId"))), w);
-                    case "drop" -> hospital.courier().drop(objects.item(String.valueOf(a.parameter("loadId"))), w);
-                    default -> hospital.courier().startFollowing(objects.person(String.valueOf(a.parameter("personId"))), w);
+                    case "pick" -> hospital.courier().pick(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
+                    case "drop" -> hospital.courier().drop(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
+                    default -> hospital.courier().startFollowing(objects.person(parameter(a, "personId", HospitalFloor.PEOPLE.keySet())), w);
                 };
                 why = ok ? null : hospital.platformLog().lastFailure().orElse("failed");
             } catch (IllegalArgumentException unknown) {
@@ -390,6 +390,21 @@ public final class SimulatedAgv implements AutoCloseable {
             }
         }
         return true;
+    }
+
+    /**
+     * The action's parameter {@code key}; failing that, the first parameter naming one of {@code known}, so that
+     * master controls that name parameters after the models' ({@code pick(i, w)}: {@code i=gauze}) are understood.
+     */
+    private static String parameter(Action a, String key, java.util.Collection<String> known) {
+        Object v = a.parameter(key);
+        if (v == null && a.actionParameters() != null) {
+            v = a.actionParameters().stream().map(p -> String.valueOf(p.value())).filter(known::contains).findFirst().orElse(null);
+        }
+        if (v == null) {
+            throw new IllegalArgumentException(a.actionType() + " needs the parameter " + key + " (one of " + known + ")");
+        }
+        return String.valueOf(v);
     }
 
     private void abortOrder(String why) {
