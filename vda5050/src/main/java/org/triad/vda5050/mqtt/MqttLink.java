@@ -86,6 +86,7 @@ public final class MqttLink implements AutoCloseable {
         o.setKeepAliveInterval(keepAliveSeconds);
         o.setConnectionTimeout((int) Math.max(1, Math.ceil(timeoutSeconds)));
         o.setMaxInflight(1000);
+        o.setSocketFactory(new NoDelaySocketFactory());
         if (will != null) {
             o.setWill(will.mqttTopic(), validated(will.mqttTopic(), will.message()), 1, true);
         }
