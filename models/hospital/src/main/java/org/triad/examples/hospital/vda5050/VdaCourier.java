@@ -1,0 +1,105 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+
+import org.triad.examples.hospital.HospitalObjects;
+import org.triad.runtime.app.FailureExplaining;
+import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.protocol.AgvState;
+
+import generated.hospital.IRobot;
+import generated.hospital.domain.Item;
+import generated.hospital.domain.Person;
+import generated.hospital.domain.WayPoint;
+
+/**
+ * The robotics expert's {@code IRobot} over VDA 5050: each action is one order (or node action) for the AGV,
+ * each property is read from the AGV's last state. Why an action failed comes from the AGV's errors.
+ */
+public final class VdaCourier implements IRobot, FailureExplaining {
+    private final RemoteAgv agv;
+    private final HospitalObjects objects;
+    private final HospitalKnowledge knowledge;
+
+    VdaCourier(RemoteAgv agv, HospitalObjects objects, HospitalKnowledge knowledge) {
+        this.agv = Objects.requireNonNull(agv, "agv");
+        this.objects = Objects.requireNonNull(objects, "objects");
+        this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
+    }
+
+    public RemoteAgv agv() {
+        return agv;
+    }
+
+    @Override
+    public boolean move(WayPoint src, WayPoint dst) {
+        return agv.drive(src.name(), dst.name());
+    }
+
+    @Override
+    public boolean pick(Item i, WayPoint w) {
+        boolean ok = agv.nodeAction(w.name(), "pick", Map.of("loadId", i.name()));
+        if (ok) {
+            knowledge.itemTaken(i.name());
+        }
+        return ok;
+    }
+
+    @Override
+    public boolean drop(Item i, WayPoint w) {
+        boolean ok = agv.nodeAction(w.name(), "drop", Map.of("loadId", i.name()));
+        if (ok) {
+            knowledge.itemPut(i.name(), w.name());
+        }
+        return ok;
+    }
+
+    @Override
+    public boolean guide(Person p, WayPoint src, WayPoint dst) {
+        boolean ok = agv.traverse(src.name(), dst.name(), "guide", Map.of("personId", p.name()));
+        if (ok) {
+            knowledge.personMoved(p.name(), dst.name());
+        }
+        return ok;
+    }
+
+    @Override
+    public boolean startFollowing(Person p, WayPoint w) {
+        return agv.nodeAction(w.name(), "startFollowing", Map.of("personId", p.name()));
+    }
+
+    @Override
+    public WayPoint loc() {
+        return objects.waypoint(state().lastNodeId());
+    }
+
+    @Override
+    public boolean carries(Item i) {
+        return state().carries(i.name());
+    }
+
+    @Override
+    public boolean handEmpty() {
+        return state().loads() == null || state().loads().isEmpty();
+    }
+
+    @Override
+    public boolean following(Person p) {
+        return state().information("following").stream()
+                .anyMatch(info -> info.infoReferences().stream().anyMatch(r -> r.referenceValue().equals(p.name())));
+    }
+
+    @Override
+    public Optional<String> lastFailure() {
+        return agv.lastFailure();
+    }
+
+    private AgvState state() {
+        if (agv.state().isEmpty() && !agv.awaitOnline()) {
+            throw new IllegalStateException("AGV " + agv.name() + " has not reported a state on " + agv.lastFailure().orElse("the broker"));
+        }
+        return agv.state().orElseThrow();
+    }
+}

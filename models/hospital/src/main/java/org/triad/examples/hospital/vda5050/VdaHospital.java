@@ -1,0 +1,64 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.util.Objects;
+import java.util.function.Consumer;
+
+import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.HospitalObjects;
+import org.triad.refarc.RefArcRun;
+import org.triad.refarc.RefArcRunner;
+import org.triad.refarc.Status;
+import org.triad.refarc.model.SchemaGoalPlanner;
+import org.triad.runtime.app.TaskInstance;
+import org.triad.runtime.schema.ModelPlanner;
+import org.triad.vda5050.master.MasterControl;
+import org.triad.vda5050.master.RemoteAgv;
+
+import generated.hospital.HospitalActionExecutor;
+import generated.hospital.HospitalSchema;
+import generated.hospital.HospitalStateProvider;
+
+/**
+ * The hospital application on a VDA 5050 AGV instead of the in-process simulation: the generated
+ * StateProvider and ActionExecutor over {@link VdaCourier} and {@link VdaBuilding}, one RefArc per robot.
+ * Several robots in one process share one {@link MasterControl} (one broker connection, own topics each):
+ *
+ * <pre>{@code
+ * try (MasterControl master = MasterControl.connect("tcp://127.0.0.1:1883", VdaTimeouts.defaults(), System.err::println)) {
+ *     VdaHospital h = new VdaHospital(master, "courier-1");
+ *     RefArcRun run = h.run(new GoTo(h.objects().room("ward3")), System.out::println);
+ * }
+ * }</pre>
+ */
+public final class VdaHospital {
+    private final HospitalObjects objects = new HospitalObjects();
+    private final VdaCourier courier;
+    private final VdaBuilding building;
+
+    public VdaHospital(MasterControl master, String serialNumber) {
+        Objects.requireNonNull(master, "master");
+        RemoteAgv agv = master.agv(serialNumber);
+        HospitalKnowledge knowledge = new HospitalKnowledge();
+        courier = new VdaCourier(agv, objects, knowledge);
+        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge);
+    }
+
+    public HospitalObjects objects() {
+        return objects;
+    }
+
+    public VdaCourier courier() {
+        return courier;
+    }
+
+    public VdaBuilding building() {
+        return building;
+    }
+
+    /** Runs the task through a fresh RefArc on this robot (synchronously), handing each status event to {@code progress}. */
+    public RefArcRun run(TaskInstance task, Consumer<? super Status> progress) {
+        RefArcRunner runner = new RefArcRunner(new HospitalStateProvider(courier, building),
+                new SchemaGoalPlanner(new ModelPlanner(HospitalSchema.SCHEMA)), new HospitalActionExecutor(courier, building));
+        return runner.run(task, progress);
+    }
+}

@@ -1,0 +1,211 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.triad.examples.hospital.HospitalRun;
+import org.triad.examples.hospital.HospitalSimulation;
+import org.triad.refarc.RefArcRun;
+import org.triad.refarc.Status;
+import org.triad.runtime.app.GroundAction;
+import org.triad.vda5050.broker.MosquittoBroker;
+import org.triad.vda5050.master.MasterControl;
+import org.triad.vda5050.master.VdaTimeouts;
+
+import generated.hospital.tasks.CollectAndDeliver;
+
+/**
+ * Benchmark main (not a test), see vda5050/BENCHMARK.md: the hospital delivery through a real Mosquitto vs.
+ * in-process (wall time, simulated-time factor, same seed, same plan), state messages per second per robot,
+ * latency from an order to the first state acknowledging it (median, p99), and 20 robots on one broker each
+ * running the delivery at 10x real time, with the CPU split between broker, robots and master.
+ * Arguments: {@code [runs=5] [robots=20]}.
+ */
+public final class VdaBenchmark {
+    private VdaBenchmark() {
+    }
+
+    private record Delivery(boolean completed, double simSeconds, double wallSeconds, List<GroundAction> plan, long states,
+            List<Long> ackNanos) {
+    }
+
+    public static void main(String[] args) throws Exception {
+        int runs = args.length > 0 ? Integer.parseInt(args[0]) : 5;
+        int robots = args.length > 1 ? Integer.parseInt(args[1]) : 20;
+        Path dir = Path.of("target", "vda5050-benchmark");
+        try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"))) {
+            // warm-up of both paths
+            inProcess();
+            throughBroker(broker, "warmup", 1e9);
+            System.out.printf(Locale.ROOT, "delivery CollectAndDeliver(gauze, storage, ward1), seed 42, %d runs each (medians)%n", runs);
+            System.out.printf(Locale.ROOT, "%-34s %8s %9s %9s %9s %10s %9s %9s%n", "path", "sim [s]", "wall [s]", "RTF", "actions",
+                    "states/s", "ack p50", "ack p99");
+            List<Delivery> local = new ArrayList<>();
+            for (int i = 0; i < runs; i++) {
+                local.add(inProcess());
+            }
+            print("in-process simulation", local);
+            for (double speed : new double[] { 1e9, 10 }) {
+                List<Delivery> remote = new ArrayList<>();
+                for (int i = 0; i < runs; i++) {
+                    remote.add(throughBroker(broker, "bench-" + (long) Math.min(speed, 1e6) + "-" + i, speed));
+                }
+                print(speed > 1e6 ? "VDA 5050 via Mosquitto, unpaced" : "VDA 5050 via Mosquitto, 10x paced", remote);
+                if (!remote.get(0).plan().equals(local.get(0).plan())) {
+                    System.out.println("  PLAN DIFFERS: " + remote.get(0).plan() + " vs " + local.get(0).plan());
+                } else {
+                    System.out.println("  same plan as in-process (" + local.get(0).plan().size() + " actions)");
+                }
+            }
+            fleet(broker, robots, dir);
+        }
+    }
+
+    private static Delivery inProcess() {
+        HospitalSimulation h = new HospitalSimulation(42);
+        List<GroundAction> plan = new ArrayList<>();
+        HospitalRun run = h.run(new CollectAndDeliver(h.objects().item("gauze"), h.objects().room("storage"), h.objects().room("ward1")),
+                s -> {
+                    if (s instanceof Status.ActionStarted a) {
+                        plan.add(a.action());
+                    }
+                });
+        return new Delivery(run.completed(), run.simSeconds(), run.wallSeconds(), plan, 0, List.of());
+    }
+
+    private static Delivery throughBroker(MosquittoBroker broker, String serial, double speed) {
+        try (SimulatedAgv agv = new SimulatedAgv(broker.url(), serial, 42, speed, null, line -> { }).start();
+                MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), line -> { })) {
+            VdaHospital h = new VdaHospital(master, serial);
+            h.courier().agv().awaitOnline();
+            List<GroundAction> plan = new ArrayList<>();
+            List<Long> acks = new CopyOnWriteArrayList<>();
+            long states0 = agv.statesSent();
+            long t0 = System.nanoTime();
+            RefArcRun run = h.run(new CollectAndDeliver(h.objects().item("gauze"), h.objects().room("storage"), h.objects().room("ward1")),
+                    s -> {
+                        if (s instanceof Status.ActionStarted a) {
+                            plan.add(a.action());
+                        } else if (s instanceof Status.ActionSucceeded && h.courier().agv().lastOrderAcknowledgedNanos() >= 0) {
+                            acks.add(h.courier().agv().lastOrderAcknowledgedNanos());
+                        }
+                    });
+            double wall = (System.nanoTime() - t0) / 1e9;
+            return new Delivery(run.outcome() == RefArcRun.Outcome.COMPLETED, agv.hospital().sim().time(), wall, plan, agv.statesSent() - states0,
+                    acks);
+        }
+    }
+
+    private static void print(String path, List<Delivery> ds) {
+        double sim = median(ds.stream().map(Delivery::simSeconds).toList());
+        double wall = median(ds.stream().map(Delivery::wallSeconds).toList());
+        double rate = median(ds.stream().map(d -> d.states() / d.wallSeconds()).toList());
+        List<Double> acks = ds.stream().flatMap(d -> d.ackNanos().stream()).map(n -> n / 1e6).sorted().toList();
+        boolean all = ds.stream().allMatch(Delivery::completed);
+        System.out.printf(Locale.ROOT, "%-34s %8.1f %9.3f %8.0fx %9d %10s %9s %9s%s%n", path, sim, wall, sim / wall, ds.get(0).plan().size(),
+                ds.get(0).states() == 0 ? "-" : String.format(Locale.ROOT, "%.1f", rate),
+                acks.isEmpty() ? "-" : String.format(Locale.ROOT, "%.2f ms", percentile(acks, 50)),
+                acks.isEmpty() ? "-" : String.format(Locale.ROOT, "%.2f ms", percentile(acks, 99)), all ? "" : "  (NOT ALL COMPLETED)");
+    }
+
+    /** N robots in one separate JVM (HospitalAgvMain --count N --speed 10), one master here, one broker: each robot delivers. */
+    private static void fleet(MosquittoBroker broker, int n, Path dir) throws Exception {
+        Files.createDirectories(dir);
+        Path out = dir.resolve("fleet-robots.log");
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", System.getProperty("java.class.path"),
+                HospitalAgvMain.class.getName(), "--broker", broker.url(), "--count", Integer.toString(n), "--speed", "10");
+        Process robotsProcess = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(out.toFile()).start();
+        try (MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), line -> { })) {
+            List<VdaHospital> hs = new ArrayList<>();
+            for (int i = 1; i <= n; i++) {
+                VdaHospital h = new VdaHospital(master, "courier-" + i);
+                if (!h.courier().agv().awaitOnline()) {
+                    throw new IllegalStateException("courier-" + i + " did not come online: " + Files.readString(out));
+                }
+                hs.add(h);
+            }
+            double brokerCpu0 = cpuSeconds(broker.pid());
+            double robotsCpu0 = cpuSeconds(robotsProcess.pid());
+            double masterCpu0 = ownCpuSeconds();
+            long t0 = System.nanoTime();
+            ExecutorService pool = Executors.newFixedThreadPool(n);
+            List<Future<double[]>> fs = new ArrayList<>();
+            for (VdaHospital h : hs) {
+                fs.add(pool.submit(() -> {
+                    long s = System.nanoTime();
+                    RefArcRun run = h.run(new CollectAndDeliver(h.objects().item("gauze"), h.objects().room("storage"), h.objects().room("ward1")),
+                            st -> { });
+                    return new double[] { run.outcome() == RefArcRun.Outcome.COMPLETED ? 1 : 0, (System.nanoTime() - s) / 1e9 };
+                }));
+            }
+            List<Double> walls = new ArrayList<>();
+            int completed = 0;
+            for (Future<double[]> f : fs) {
+                double[] r = f.get();
+                completed += (int) r[0];
+                walls.add(r[1]);
+            }
+            double wall = (System.nanoTime() - t0) / 1e9;
+            pool.shutdown();
+            double brokerCpu = cpuSeconds(broker.pid()) - brokerCpu0;
+            double robotsCpu = cpuSeconds(robotsProcess.pid()) - robotsCpu0;
+            double masterCpu = ownCpuSeconds() - masterCpu0;
+            List<Double> virtual = virtualSeconds(Files.readString(out));
+            double v = median(virtual);
+            System.out.printf(Locale.ROOT, "%n%d robots on one broker (robots in one JVM at 10x, master in another), each delivering gauze:%n", n);
+            System.out.printf(Locale.ROOT, "  completed %d of %d; task wall time median %.2f s, max %.2f s; simulated %.1f s each -> %.1fx real time (median), %.1fx (slowest)%n",
+                    completed, n, median(walls), Collections.max(walls), v, v / median(walls), v / Collections.max(walls));
+            double total = brokerCpu + robotsCpu + masterCpu;
+            System.out.printf(Locale.ROOT, "  CPU over %.2f s wall: broker %.2f s (%.0f%%), robots %.2f s (%.0f%%), master %.2f s (%.0f%%); %.2f of 2 cores busy%n",
+                    wall, brokerCpu, 100 * brokerCpu / total, robotsCpu, 100 * robotsCpu / total, masterCpu, 100 * masterCpu / total, total / wall);
+        } finally {
+            robotsProcess.destroy();
+            robotsProcess.waitFor(20, TimeUnit.SECONDS);
+            robotsProcess.destroyForcibly();
+        }
+    }
+
+    /** Each robot's virtual time at its last finished order (its simulation only runs while it acts). */
+    private static List<Double> virtualSeconds(String log) {
+        Matcher m = Pattern.compile("agv (\\S+): order \\S+ finished at \\S+ \\(([0-9.]+) s virtual time\\)").matcher(log);
+        java.util.Map<String, Double> last = new java.util.TreeMap<>();
+        while (m.find()) {
+            last.merge(m.group(1), Double.parseDouble(m.group(2)), Math::max);
+        }
+        return last.isEmpty() ? List.of(Double.NaN) : new ArrayList<>(last.values());
+    }
+
+    /** utime + stime of a process from /proc, in seconds (clock ticks of 10 ms). */
+    private static double cpuSeconds(long pid) throws IOException {
+        String stat = Files.readString(Path.of("/proc", Long.toString(pid), "stat"));
+        String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+        return (Long.parseLong(f[11]) + Long.parseLong(f[12])) / 100.0;
+    }
+
+    private static double ownCpuSeconds() {
+        return ProcessHandle.current().info().totalCpuDuration().orElse(Duration.ZERO).toNanos() / 1e9;
+    }
+
+    private static double median(List<Double> xs) {
+        return percentile(xs.stream().sorted().toList(), 50);
+    }
+
+    private static double percentile(List<Double> sorted, double p) {
+        List<Double> s = sorted.stream().sorted().toList();
+        int i = (int) Math.ceil(p / 100 * s.size()) - 1;
+        return s.get(Math.max(0, Math.min(s.size() - 1, i)));
+    }
+}

@@ -1,0 +1,97 @@
+package org.triad.vda5050.master;
+
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
+
+import org.triad.vda5050.mqtt.MqttLink;
+import org.triad.vda5050.mqtt.Received;
+import org.triad.vda5050.protocol.Topic;
+
+/**
+ * VDA 5050 master control on one broker: one MQTT connection serving any number of AGVs, each a
+ * {@link RemoteAgv} with its own topics. The factory for services and applications:
+ *
+ * <pre>{@code
+ * try (MasterControl master = MasterControl.connect("tcp://127.0.0.1:1883", VdaTimeouts.defaults(), System.err::println)) {
+ *     RemoteAgv courier = master.agv("courier-1");          // manufacturer "triad"
+ *     courier.drive("lobby", "c4");                           // an order of two nodes and an edge; blocks until done
+ * }
+ * }</pre>
+ *
+ * Messages from AGVs nobody asked for (an unknown serial number) are reported once per AGV and ignored.
+ */
+public final class MasterControl implements AutoCloseable {
+    /** The manufacturer the simulated hospital robots report. */
+    public static final String TRIAD = "triad";
+
+    private final MqttLink link;
+    private final VdaTimeouts timeouts;
+    private final Consumer<String> log;
+    private final Map<String, RemoteAgv> agvs = new ConcurrentHashMap<>();
+    private final Set<String> unknownReported = ConcurrentHashMap.newKeySet();
+
+    private MasterControl(MqttLink link, VdaTimeouts timeouts, Consumer<String> log) {
+        this.link = link;
+        this.timeouts = timeouts;
+        this.log = log;
+    }
+
+    /**
+     * Connects to the broker at {@code tcp://HOST:PORT}.
+     *
+     * @param log where one-line reports go (ignored messages, unknown AGVs)
+     * @throws org.triad.vda5050.mqtt.BrokerUnreachableException when no broker answers (the message names host and port)
+     */
+    public static MasterControl connect(String broker, VdaTimeouts timeouts, Consumer<String> log) {
+        Objects.requireNonNull(timeouts, "timeouts");
+        Objects.requireNonNull(log, "log");
+        String clientId = "triad-master-" + ProcessHandle.current().pid() + "-" + Long.toHexString(System.nanoTime() & 0xffffff);
+        MqttLink link = MqttLink.connect(broker, clientId, null, log, 10, 5);
+        MasterControl m = new MasterControl(link, timeouts, log);
+        link.onReconnect(() -> m.agvs.values().forEach(RemoteAgv::masterReconnected));
+        link.subscribe(Topic.STATE.ofAll(), m::route);
+        link.subscribe(Topic.CONNECTION.ofAll(), m::route);
+        link.subscribe(Topic.FACTSHEET.ofAll(), m::route);
+        return m;
+    }
+
+    /** The AGV of manufacturer {@value #TRIAD} with this serial number. */
+    public RemoteAgv agv(String serialNumber) {
+        return agv(TRIAD, serialNumber);
+    }
+
+    /** The AGV with this manufacturer and serial number; the same object for the same AGV. */
+    public RemoteAgv agv(String manufacturer, String serialNumber) {
+        Topic.ORDER.of(manufacturer, serialNumber); // rejects names unusable in topics
+        return agvs.computeIfAbsent(manufacturer + "/" + serialNumber, k -> new RemoteAgv(link, manufacturer, serialNumber, timeouts));
+    }
+
+    public String broker() {
+        return link.broker();
+    }
+
+    /** The MQTT link (message counts, for benchmarks). */
+    public MqttLink link() {
+        return link;
+    }
+
+    private void route(Received r) {
+        RemoteAgv agv = agvs.get(r.address().manufacturer() + "/" + r.address().serialNumber());
+        if (agv == null) {
+            if (unknownReported.add(r.address().manufacturer() + "/" + r.address().serialNumber())) {
+                log.accept("vda5050: ignored " + r.address().topic().leaf() + " from unknown AGV " + r.address().manufacturer() + "/"
+                        + r.address().serialNumber() + " on " + r.mqttTopic() + " (no robot of this master has that serial number)");
+            }
+            return;
+        }
+        agv.receive(r);
+    }
+
+    @Override
+    public void close() {
+        link.close();
+    }
+}

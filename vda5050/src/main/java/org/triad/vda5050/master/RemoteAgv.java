@@ -1,0 +1,394 @@
+package org.triad.vda5050.master;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BooleanSupplier;
+import java.util.function.Function;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import org.triad.runtime.app.FailureExplaining;
+import org.triad.vda5050.mqtt.MqttLink;
+import org.triad.vda5050.mqtt.Received;
+import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Connection;
+import org.triad.vda5050.protocol.Header;
+import org.triad.vda5050.protocol.HeaderIds;
+import org.triad.vda5050.protocol.InstantActions;
+import org.triad.vda5050.protocol.Messages.Action;
+import org.triad.vda5050.protocol.Messages.ActionParameter;
+import org.triad.vda5050.protocol.Messages.ActionState;
+import org.triad.vda5050.protocol.Messages.ActionStatus;
+import org.triad.vda5050.protocol.Messages.AgvError;
+import org.triad.vda5050.protocol.Messages.BlockingType;
+import org.triad.vda5050.protocol.Messages.ConnectionState;
+import org.triad.vda5050.protocol.Messages.Edge;
+import org.triad.vda5050.protocol.Messages.Node;
+import org.triad.vda5050.protocol.Order;
+import org.triad.vda5050.protocol.Topic;
+
+/**
+ * One AGV as master control sees it: the last state and connection it reported, and blocking calls that
+ * send it an order or instant action and wait until the AGV reports it finished, failed or rejected it,
+ * fell silent, or lost its connection. Each call returns whether it succeeded; {@link #lastFailure()} says
+ * why not, in words for RefArc's Status. Robotics experts implement {@code IRobot} in a few lines on it:
+ *
+ * <pre>{@code
+ * public boolean move(WayPoint src, WayPoint dst) { return agv.drive(src.name(), dst.name()); }
+ * public boolean pick(Item i, WayPoint w) { return agv.nodeAction(w.name(), "pick", Map.of("loadId", i.name())); }
+ * public WayPoint loc() { return objects.waypoint(agv.state().orElseThrow().lastNodeId()); }
+ * }</pre>
+ *
+ * Orders get ids unique to this master ({@code triad-<session>-<n>}), so an AGV that receives one twice
+ * (QoS 1 after a broker restart) recognises the duplicate by orderId and orderUpdateId.
+ */
+public final class RemoteAgv implements FailureExplaining {
+    private static final String SESSION = Long.toHexString(System.currentTimeMillis() & 0xffffffffL);
+    private static final AtomicInteger IDS = new AtomicInteger();
+
+    private final MqttLink link;
+    private final String manufacturer;
+    private final String serialNumber;
+    private final VdaTimeouts timeouts;
+    private final HeaderIds headerIds = new HeaderIds();
+    private final Object lock = new Object();
+    private AgvState state;
+    private long stateNanos;
+    private ConnectionState connection;
+    private long connectionNanos;
+    private long masterReconnectNanos;
+    private JsonNode factsheet;
+    private int lastStateHeaderId = -1;
+    private String lastFailure;
+    private long orderToFirstState = -1;
+
+    RemoteAgv(MqttLink link, String manufacturer, String serialNumber, VdaTimeouts timeouts) {
+        this.link = link;
+        this.manufacturer = manufacturer;
+        this.serialNumber = serialNumber;
+        this.timeouts = timeouts;
+    }
+
+    public String serialNumber() {
+        return serialNumber;
+    }
+
+    public String manufacturer() {
+        return manufacturer;
+    }
+
+    /** {@code triad/courier-1}. */
+    public String name() {
+        return manufacturer + "/" + serialNumber;
+    }
+
+    /** The last state the AGV reported, if any. */
+    public Optional<AgvState> state() {
+        synchronized (lock) {
+            return Optional.ofNullable(state);
+        }
+    }
+
+    /** The last connection state the AGV reported (its last will included), if any. */
+    public Optional<ConnectionState> connection() {
+        synchronized (lock) {
+            return Optional.ofNullable(connection);
+        }
+    }
+
+    /** The last factsheet the AGV published, if any. */
+    public Optional<JsonNode> factsheet() {
+        synchronized (lock) {
+            return Optional.ofNullable(factsheet);
+        }
+    }
+
+    /** Wall-clock nanoseconds from the last order sent to the first state acknowledging it (its orderId), or -1. */
+    public long lastOrderAcknowledgedNanos() {
+        synchronized (lock) {
+            return orderToFirstState;
+        }
+    }
+
+    @Override
+    public Optional<String> lastFailure() {
+        synchronized (lock) {
+            return Optional.ofNullable(lastFailure);
+        }
+    }
+
+    /**
+     * Waits until the AGV has reported a state while ONLINE: up to the online timeout for an AGV not heard
+     * from yet, up to the reconnect grace for one whose connection is known broken or offline.
+     */
+    public boolean awaitOnline() {
+        boolean knownDown;
+        synchronized (lock) {
+            knownDown = connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE;
+        }
+        return await(() -> state != null && connection != ConnectionState.CONNECTIONBROKEN && connection != ConnectionState.OFFLINE,
+                knownDown ? timeouts.reconnectGraceSeconds() : timeouts.onlineSeconds());
+    }
+
+    /** Drives from node {@code from} (where the AGV is) along the edge to node {@code to}: an order of two nodes and an edge. */
+    public boolean drive(String from, String to) {
+        return traverse(from, to, null, Map.of());
+    }
+
+    /**
+     * Drives from {@code from} to {@code to} doing {@code edgeActionType} (with these parameters) on the way,
+     * e.g. guiding a person; with a null action type a plain drive.
+     */
+    public boolean traverse(String from, String to, String edgeActionType, Map<String, ?> parameters) {
+        List<Action> edgeActions = edgeActionType == null ? List.of() : List.of(action(edgeActionType, parameters));
+        String orderId = nextId("order");
+        List<Node> nodes = List.of(new Node(from, 0, null, true, null, List.of()), new Node(to, 2, null, true, null, List.of()));
+        List<Edge> edges = List.of(new Edge(from + "-" + to, 1, null, true, from, to, edgeActions));
+        return runOrder(orderId, nodes, edges, edgeActions, describeCall(edgeActionType == null ? "drive" : edgeActionType, from, to));
+    }
+
+    /** Runs one action at a node (where the AGV is): an order of that node carrying the action with these parameters. */
+    public boolean nodeAction(String node, String actionType, Map<String, ?> parameters) {
+        Action a = action(actionType, parameters);
+        String orderId = nextId("order");
+        return runOrder(orderId, List.of(new Node(node, 0, null, true, null, List.of(a))), List.of(), List.of(a),
+                describeCall(actionType, node, null));
+    }
+
+    /** Sends an instant action (outside any order) and waits for its action state to finish or fail. */
+    public boolean instantAction(String actionType, Map<String, ?> parameters) {
+        Action a = action(actionType, parameters);
+        String call = "instant action " + actionType;
+        if (!ready(call)) {
+            return false;
+        }
+        long sent = System.nanoTime();
+        publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
+                manufacturer, serialNumber, List.of(a)));
+        return awaitOutcome(call, sent, s -> {
+            Optional<ActionState> as = s.actionState(a.actionId());
+            if (as.isEmpty()) {
+                return Outcome.PENDING;
+            }
+            if (as.get().actionStatus() == ActionStatus.FAILED) {
+                return Outcome.failed(actionType + " failed" + result(as.get()));
+            }
+            return as.get().actionStatus() == ActionStatus.FINISHED ? Outcome.DONE : Outcome.PENDING;
+        }, null);
+    }
+
+    private boolean runOrder(String orderId, List<Node> nodes, List<Edge> edges, List<Action> actions, String call) {
+        if (!ready(call)) {
+            return false;
+        }
+        long sent = System.nanoTime();
+        synchronized (lock) {
+            orderToFirstState = -1;
+        }
+        publish(Topic.ORDER, new Order(headerIds.next(Topic.ORDER), HeaderIds.now(), Header.VERSION, manufacturer, serialNumber, orderId, 0,
+                null, nodes, edges));
+        return awaitOutcome(call, sent, s -> {
+            if (!orderId.equals(s.orderId())) {
+                return Outcome.PENDING;
+            }
+            for (AgvError e : s.errors()) {
+                if (orderId.equals(e.reference("orderId"))) {
+                    return Outcome.failed(e.describe());
+                }
+            }
+            for (Action a : actions) {
+                Optional<ActionState> as = s.actionState(a.actionId());
+                if (as.isPresent() && as.get().actionStatus() == ActionStatus.FAILED) {
+                    return Outcome.failed(a.actionType() + " failed" + result(as.get()));
+                }
+            }
+            boolean actionsDone = actions.stream()
+                    .allMatch(a -> s.actionState(a.actionId()).map(as -> as.actionStatus() == ActionStatus.FINISHED).orElse(false));
+            return s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving() && actionsDone ? Outcome.DONE : Outcome.PENDING;
+        }, orderId);
+    }
+
+    /** Whether the AGV is (or comes) online; otherwise records why not. */
+    private boolean ready(String call) {
+        if (!awaitOnline()) {
+            synchronized (lock) {
+                if (connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) {
+                    lastFailure = "AGV " + name() + " is " + connection + ", cannot " + call;
+                } else {
+                    lastFailure = String.format(Locale.ROOT, "AGV %s did not come online on %s within %.1f s, cannot %s", name(), link.broker(),
+                            timeouts.onlineSeconds(), call);
+                }
+            }
+            return false;
+        }
+        return true;
+    }
+
+    private record Outcome(boolean done, String failure) {
+        static final Outcome PENDING = new Outcome(false, null);
+        static final Outcome DONE = new Outcome(true, null);
+
+        static Outcome failed(String why) {
+            return new Outcome(false, why);
+        }
+    }
+
+    /** Waits for the verdict on the AGV's states; also catches rejections (errors naming an order it did not take), silence and broken connections. */
+    private boolean awaitOutcome(String call, long sentNanos, Function<AgvState, Outcome> verdict, String orderId) {
+        long deadline = sentNanos + seconds(timeouts.actionSeconds());
+        synchronized (lock) {
+            lastFailure = null;
+            while (true) {
+                long now = System.nanoTime();
+                if (state != null && stateNanos >= sentNanos) {
+                    if (orderId != null && orderToFirstState < 0 && orderId.equals(state.orderId())) {
+                        orderToFirstState = stateNanos - sentNanos;
+                    }
+                    if (orderId != null && !orderId.equals(state.orderId())) {
+                        for (AgvError e : state.errors()) {
+                            if (orderId.equals(e.reference("orderId"))) {
+                                return fail(call + " rejected by AGV " + name() + ": " + e.describe());
+                            }
+                        }
+                    }
+                    Outcome o = verdict.apply(state);
+                    if (o.done()) {
+                        return true;
+                    }
+                    if (o.failure() != null) {
+                        return fail(call + " failed on AGV " + name() + ": " + o.failure());
+                    }
+                }
+                // the grace runs while this master is connected itself: after a broker restart the AGV's ONLINE comes after ours
+                if ((connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= sentNanos
+                        && link.isConnected() && now - Math.max(connectionNanos, masterReconnectNanos) > seconds(timeouts.reconnectGraceSeconds())) {
+                    return fail(String.format(Locale.ROOT, "AGV %s reported %s%s during %s and did not come back within %.1f s", name(), connection,
+                            connection == ConnectionState.CONNECTIONBROKEN ? " (its last will)" : "", call, timeouts.reconnectGraceSeconds()));
+                }
+                long heard = Math.max(Math.max(stateNanos, sentNanos), masterReconnectNanos);
+                if (link.isConnected() && now - heard > seconds(timeouts.stateSeconds())) {
+                    return giveUp(orderId, String.format(Locale.ROOT, "no state from AGV %s for %.1f s during %s (timeout)", name(), timeouts.stateSeconds(),
+                            call));
+                }
+                if (now > deadline) {
+                    return giveUp(orderId, String.format(Locale.ROOT, "%s on AGV %s did not finish within %.1f s (timeout)", call, name(),
+                            timeouts.actionSeconds()));
+                }
+                try {
+                    lock.wait(50);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return fail(call + " on AGV " + name() + " interrupted");
+                }
+            }
+        }
+    }
+
+    private boolean fail(String why) {
+        lastFailure = why;
+        return false;
+    }
+
+    /** Master control gave up on an order the AGV may still be executing (silence, timeout): it should stop it. */
+    private boolean giveUp(String orderId, String why) {
+        if (orderId != null) {
+            Action cancel = action("cancelOrder", Map.of());
+            publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
+                    manufacturer, serialNumber, List.of(cancel)));
+        }
+        return fail(why);
+    }
+
+    private boolean await(BooleanSupplier condition, double seconds) {
+        long deadline = System.nanoTime() + seconds(seconds);
+        synchronized (lock) {
+            while (!condition.getAsBoolean()) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    return false;
+                }
+                try {
+                    lock.wait(Math.max(1, Math.min(50, left / 1_000_000)));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
+
+    void receive(Received r) {
+        Header h;
+        switch (r.address().topic()) {
+            case STATE -> h = r.as(AgvState.class);
+            case CONNECTION -> h = r.as(Connection.class);
+            case FACTSHEET -> {
+                synchronized (lock) {
+                    factsheet = r.json();
+                    lock.notifyAll();
+                }
+                return;
+            }
+            default -> {
+                return;
+            }
+        }
+        synchronized (lock) {
+            if (h instanceof AgvState s) {
+                // a duplicate (QoS 1) or an older state overtaken by a newer one; a restarted AGV says ONLINE first
+                if (s.headerId() <= lastStateHeaderId) {
+                    return;
+                }
+                lastStateHeaderId = s.headerId();
+                state = s;
+                stateNanos = System.nanoTime();
+            } else if (h instanceof Connection c) {
+                connection = c.connectionState();
+                connectionNanos = System.nanoTime();
+                if (connection == ConnectionState.ONLINE) {
+                    lastStateHeaderId = -1;
+                }
+            }
+            lock.notifyAll();
+        }
+    }
+
+    void masterReconnected() {
+        synchronized (lock) {
+            masterReconnectNanos = System.nanoTime();
+            lock.notifyAll();
+        }
+    }
+
+    private void publish(Topic topic, Object message) {
+        link.publish(topic.of(manufacturer, serialNumber), message, false);
+    }
+
+    private static Action action(String actionType, Map<String, ?> parameters) {
+        List<ActionParameter> ps = new ArrayList<>();
+        new LinkedHashMap<>(parameters).forEach((k, v) -> ps.add(new ActionParameter(k, v)));
+        return new Action(actionType, nextId(actionType), null, BlockingType.HARD, ps.isEmpty() ? null : ps);
+    }
+
+    private static String nextId(String kind) {
+        return "triad-" + SESSION + "-" + kind + "-" + IDS.incrementAndGet();
+    }
+
+    private static String describeCall(String what, String at, String to) {
+        return what + (to == null ? " at " + at : " " + at + " -> " + to);
+    }
+
+    private static String result(ActionState as) {
+        return as.resultDescription() == null ? "" : ": " + as.resultDescription();
+    }
+
+    private static long seconds(double s) {
+        return (long) (s * 1e9);
+    }
+}

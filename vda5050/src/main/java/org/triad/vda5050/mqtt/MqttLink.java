@@ -1,0 +1,292 @@
+package org.triad.vda5050.mqtt;
+
+import java.net.URI;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import org.eclipse.paho.client.mqttv3.DisconnectedBufferOptions;
+import org.eclipse.paho.client.mqttv3.IMqttDeliveryToken;
+import org.eclipse.paho.client.mqttv3.MqttAsyncClient;
+import org.eclipse.paho.client.mqttv3.MqttCallbackExtended;
+import org.eclipse.paho.client.mqttv3.MqttConnectOptions;
+import org.eclipse.paho.client.mqttv3.MqttException;
+import org.eclipse.paho.client.mqttv3.MqttMessage;
+import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
+import org.triad.vda5050.protocol.Header;
+import org.triad.vda5050.protocol.MessageSchemas;
+import org.triad.vda5050.protocol.Topic;
+import org.triad.vda5050.protocol.VdaJson;
+import org.triad.vda5050.protocol.VdaMessageException;
+
+/**
+ * One MQTT connection of a VDA 5050 participant (master control or AGV) through Eclipse Paho: QoS 1,
+ * a persistent session (clean session off, so the broker keeps subscriptions and queued messages
+ * across reconnects), automatic reconnect with messages published meanwhile buffered, and an optional
+ * last will. Every message sent is validated against its topic's official schema first (a violation is
+ * a bug and throws); every message received is parsed, validated and version-checked before a handler
+ * sees it, and one that fails is reported as one line naming the topic and ignored.
+ */
+public final class MqttLink implements AutoCloseable {
+    /** A last will: published by the broker when this link dies without disconnecting. */
+    public record Will(String mqttTopic, Object message) {
+    }
+
+    private final MqttAsyncClient client;
+    private final String broker;
+    private final Consumer<String> problems;
+    private final Map<String, Consumer<Received>> handlers = new ConcurrentHashMap<>();
+    private final List<Runnable> reconnectListeners = new CopyOnWriteArrayList<>();
+    private final List<Consumer<String>> sentListeners = new CopyOnWriteArrayList<>();
+    private final ExecutorService dispatch;
+    private final AtomicLong received = new AtomicLong();
+    private final AtomicLong rejected = new AtomicLong();
+    private volatile boolean connected;
+
+    private MqttLink(String broker, String clientId, Consumer<String> problems) throws MqttException {
+        this.broker = broker;
+        this.problems = problems;
+        this.client = new MqttAsyncClient(broker, clientId, new MemoryPersistence());
+        this.dispatch = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "vda5050-" + clientId);
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /**
+     * Connects to the broker ({@code tcp://HOST:PORT}) as {@code clientId}.
+     *
+     * @param problems where messages that were ignored are reported, one line each
+     * @throws BrokerUnreachableException when no broker answers within {@code timeoutSeconds}
+     */
+    public static MqttLink connect(String broker, String clientId, Will will, Consumer<String> problems, int keepAliveSeconds,
+            double timeoutSeconds) {
+        Objects.requireNonNull(problems, "problems");
+        URI uri = brokerUri(broker);
+        MqttLink link;
+        try {
+            link = new MqttLink(broker, clientId, problems);
+        } catch (MqttException e) {
+            throw new IllegalArgumentException("cannot use MQTT client id '" + clientId + "': " + e.getMessage(), e);
+        }
+        MqttConnectOptions o = new MqttConnectOptions();
+        o.setCleanSession(false);
+        o.setAutomaticReconnect(true);
+        o.setMaxReconnectDelay(1000);
+        o.setKeepAliveInterval(keepAliveSeconds);
+        o.setConnectionTimeout((int) Math.max(1, Math.ceil(timeoutSeconds)));
+        o.setMaxInflight(1000);
+        o.setSocketFactory(new NoDelaySocketFactory());
+        if (will != null) {
+            o.setWill(will.mqttTopic(), validated(will.mqttTopic(), will.message()), 1, true);
+        }
+        DisconnectedBufferOptions buffer = new DisconnectedBufferOptions();
+        buffer.setBufferEnabled(true);
+        buffer.setBufferSize(10_000);
+        buffer.setPersistBuffer(false);
+        buffer.setDeleteOldestMessages(false);
+        link.client.setBufferOpts(buffer);
+        link.client.setCallback(link.new Callback());
+        try {
+            link.client.connect(o).waitForCompletion((long) (timeoutSeconds * 1000));
+            link.connected = true;
+        } catch (MqttException e) {
+            link.closeQuietly();
+            throw new BrokerUnreachableException("no MQTT broker at " + uri.getHost() + ":" + uri.getPort() + " (" + broker + "): "
+                    + reason(e), e);
+        }
+        return link;
+    }
+
+    private static URI brokerUri(String broker) {
+        URI uri;
+        try {
+            uri = URI.create(broker);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected tcp://HOST:PORT)");
+        }
+        if (!"tcp".equals(uri.getScheme()) || uri.getHost() == null || uri.getPort() < 0) {
+            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected tcp://HOST:PORT)");
+        }
+        return uri;
+    }
+
+    private static String reason(MqttException e) {
+        Throwable c = e.getCause();
+        return c != null && c.getMessage() != null ? c.getMessage() : e.getMessage();
+    }
+
+    public String broker() {
+        return broker;
+    }
+
+    public boolean isConnected() {
+        return connected;
+    }
+
+    /** Messages received (valid or not) and messages ignored as malformed, since the start. */
+    public long receivedCount() {
+        return received.get();
+    }
+
+    public long rejectedCount() {
+        return rejected.get();
+    }
+
+    /** Runs after every automatic reconnect (subscriptions are renewed first). */
+    public void onReconnect(Runnable r) {
+        reconnectListeners.add(r);
+    }
+
+    /** Sees the MQTT topic of every message published through this link (for message-rate counts). */
+    public void onSent(Consumer<String> listener) {
+        sentListeners.add(listener);
+    }
+
+    /** Subscribes with QoS 1; the handler runs on this link's one dispatch thread, in arrival order. */
+    public void subscribe(String filter, Consumer<Received> handler) {
+        handlers.put(filter, handler);
+        try {
+            client.subscribe(filter, 1).waitForCompletion(5000);
+        } catch (MqttException e) {
+            throw new IllegalStateException("cannot subscribe to " + filter + " on " + broker + ": " + reason(e), e);
+        }
+    }
+
+    /** Publishes a message (QoS 1) after checking it against its topic's schema; buffered while reconnecting. */
+    public void publish(String mqttTopic, Object message, boolean retained) {
+        byte[] payload = validated(mqttTopic, message);
+        publishRaw(mqttTopic, payload, retained);
+    }
+
+    /** Publishes bytes as they are, unchecked: only for tests that feed malformed messages to the other side. */
+    public void publishRaw(String mqttTopic, byte[] payload, boolean retained) {
+        try {
+            client.publish(mqttTopic, payload, 1, retained);
+            sentListeners.forEach(l -> l.accept(mqttTopic));
+        } catch (MqttException e) {
+            throw new IllegalStateException("cannot publish to " + mqttTopic + " on " + broker + ": " + reason(e), e);
+        }
+    }
+
+    private static byte[] validated(String mqttTopic, Object message) {
+        Topic.Address a = Topic.parse(mqttTopic)
+                .orElseThrow(() -> new IllegalArgumentException("not a VDA 5050 topic: " + mqttTopic));
+        JsonNode tree = VdaJson.tree(message);
+        try {
+            MessageSchemas.get().check(a.topic(), tree);
+        } catch (VdaMessageException e) {
+            throw new IllegalStateException("refusing to send a malformed message on " + mqttTopic + ": " + e.getMessage(), e);
+        }
+        return VdaJson.write(tree);
+    }
+
+    private void deliver(String mqttTopic, byte[] payload) {
+        received.incrementAndGet();
+        try {
+            Topic.Address a = Topic.parse(mqttTopic)
+                    .orElseThrow(() -> new VdaMessageException("not a VDA 5050 topic"));
+            if (!a.major().equals(Header.MAJOR)) {
+                throw new VdaMessageException("major version " + a.major() + " in the topic; Triad speaks " + Header.VERSION);
+            }
+            JsonNode json = VdaJson.parse(payload);
+            JsonNode version = json.get("version");
+            if (version != null && version.isTextual() && Header.majorOf(version.asText()) != Header.majorOf(Header.VERSION)) {
+                throw new VdaMessageException("speaks VDA 5050 " + version.asText() + "; Triad speaks " + Header.VERSION);
+            }
+            MessageSchemas.get().check(a.topic(), json);
+            Received r = new Received(mqttTopic, a, json);
+            for (Map.Entry<String, Consumer<Received>> h : handlers.entrySet()) {
+                if (matches(h.getKey(), mqttTopic)) {
+                    h.getValue().accept(r);
+                }
+            }
+        } catch (VdaMessageException e) {
+            rejected.incrementAndGet();
+            problems.accept("vda5050: ignored message on " + mqttTopic + ": " + e.getMessage());
+        } catch (RuntimeException e) {
+            problems.accept("vda5050: handling a message on " + mqttTopic + " failed: " + e);
+        }
+    }
+
+    static boolean matches(String filter, String topic) {
+        String[] f = filter.split("/", -1);
+        String[] t = topic.split("/", -1);
+        for (int i = 0; i < f.length; i++) {
+            if (f[i].equals("#")) {
+                return true;
+            }
+            if (i >= t.length || !(f[i].equals("+") || f[i].equals(t[i]))) {
+                return false;
+            }
+        }
+        return f.length == t.length;
+    }
+
+    private final class Callback implements MqttCallbackExtended {
+        @Override
+        public void connectComplete(boolean reconnect, String serverURI) {
+            connected = true;
+            if (reconnect) {
+                dispatch.execute(() -> {
+                    for (String filter : handlers.keySet()) {
+                        try {
+                            client.subscribe(filter, 1);
+                        } catch (MqttException e) {
+                            problems.accept("vda5050: cannot renew the subscription to " + filter + ": " + reason(e));
+                        }
+                    }
+                    reconnectListeners.forEach(Runnable::run);
+                });
+            }
+        }
+
+        @Override
+        public void connectionLost(Throwable cause) {
+            connected = false;
+        }
+
+        @Override
+        public void messageArrived(String topic, MqttMessage message) {
+            byte[] payload = message.getPayload();
+            dispatch.execute(() -> deliver(topic, payload));
+        }
+
+        @Override
+        public void deliveryComplete(IMqttDeliveryToken token) {
+        }
+    }
+
+    /** Disconnects cleanly (no last will), after the messages published so far have gone out. */
+    @Override
+    public void close() {
+        try {
+            if (client.isConnected()) {
+                client.disconnect(2000).waitForCompletion(3000);
+            }
+        } catch (MqttException e) {
+            // closing anyway
+        }
+        closeQuietly();
+    }
+
+    private void closeQuietly() {
+        dispatch.shutdown();
+        try {
+            dispatch.awaitTermination(1, TimeUnit.SECONDS);
+            client.close(true);
+        } catch (MqttException | InterruptedException e) {
+            // nothing left to release
+        }
+    }
+}
