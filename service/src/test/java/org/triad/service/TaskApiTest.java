@@ -14,6 +14,13 @@ import org.junit.jupiter.api.io.TempDir;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
+import io.swagger.v3.oas.models.OpenAPI;
+import io.swagger.v3.oas.models.media.ComposedSchema;
+import io.swagger.v3.oas.models.media.Schema;
+import io.swagger.v3.parser.OpenAPIV3Parser;
+import io.swagger.v3.parser.core.models.ParseOptions;
+import io.swagger.v3.parser.core.models.SwaggerParseResult;
+
 /** The typed task API over the hospital's task models, with dry-run robots: accepted tasks run, bad ones get field-level JSON errors. */
 class TaskApiTest {
     @TempDir
@@ -134,6 +141,27 @@ class TaskApiTest {
         assertEquals(404, s.get("/api/tasks/abc", ServiceFixture.SUBMIT).status());
         assertEquals(404, s.get("/api/nothing", ServiceFixture.SUBMIT).status());
         assertEquals("not-found", s.get("/api/nothing", ServiceFixture.SUBMIT).body().get("error").asText());
+    }
+
+    @Test
+    void theOpenApiDocumentIsValidOpenApi3WithASchemaPerTaskAndObjectsAsEnums() {
+        ServiceFixture.Response r = s.get("/api/openapi.json", null);
+        assertEquals(200, r.status());
+        ParseOptions options = new ParseOptions();
+        options.setResolve(true);
+        SwaggerParseResult parsed = new OpenAPIV3Parser().readContents(r.body().toString(), null, options);
+        assertEquals(List.of(), parsed.getMessages(), "validator messages");
+        OpenAPI api = parsed.getOpenAPI();
+        assertEquals("3.0.3", api.getOpenapi());
+        for (String task : List.of("GoTo", "Patrol", "Fetch", "Deliver", "CollectAndDeliver", "Guide", "Follow")) {
+            assertTrue(api.getComponents().getSchemas().containsKey("Task." + task), task);
+        }
+        Schema<?> fetchArgs = (Schema<?>) api.getComponents().getSchemas().get("Task.Fetch").getProperties().get("args");
+        assertEquals(java.util.Set.of("i", "from", "to"), java.util.Set.copyOf(fetchArgs.getRequired()));
+        assertEquals(List.of("gauze", "syringe", "bandage"), ((Schema<?>) fetchArgs.getProperties().get("i")).getEnum());
+        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby"), ((Schema<?>) fetchArgs.getProperties().get("to")).getEnum());
+        assertEquals(7, ((ComposedSchema) api.getComponents().getSchemas().get("TaskSubmission")).getOneOf().size());
+        assertTrue(api.getPaths().get("/api/tasks").getPost() != null);
     }
 
     @Test
