@@ -10,8 +10,8 @@ import org.triad.refarc.Status;
 import org.triad.refarc.model.DryRunWorld;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.State;
-import org.triad.runtime.planning.Planner;
-import org.triad.runtime.planning.Planners;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.PddlPlanners;
 import org.triad.runtime.schema.ModelPlanner;
 import org.triad.runtime.schema.ModelTask;
 
@@ -37,7 +37,7 @@ public final class RunCommand implements Callable<Integer> {
 	@Option(names = "--planner", paramLabel = "triad|pddl4j|COMMAND",
 			description = "the planner: triad (default), pddl4j, or an external planner's command line with {domain} {problem} [{plan}];"
 					+ " default from $TRIAD_PLANNER")
-	private String planner = System.getenv(Planners.ENV);
+	private String planner = System.getenv(PddlPlanners.ENV);
 
 	@Option(names = "--planning-timeout", paramLabel = "SECONDS", description = "time limit of one planning call (default 30)")
 	private double planningTimeout = 30;
@@ -66,9 +66,9 @@ public final class RunCommand implements Callable<Integer> {
 			}
 			world.failOnCall(parts[0], nth);
 		}
-		Planner engine;
+		PddlPlanner engine;
 		try {
-			engine = Planners.byName(planner);
+			engine = PddlPlanners.byName(planner);
 		} catch (IllegalArgumentException e) {
 			throw new ModelSession.UserError(e.getMessage());
 		}

@@ -66,7 +66,7 @@ public final class SchemaBuilder {
 			}
 			for (Action a : actor.getActions()) {
 				List<Effect> effects = new ArrayList<>();
-				for (org.triad.dsl.semantics.Effect e : Postconditions.analyse(a.getPost()).effects()) {
+				for (org.triad.dsl.semantics.PostconditionEffect e : Postconditions.analyse(a.getPost()).effects()) {
 					effects.add(new Effect((Expr.Call) expr(e.call()), e.holds(), e.value() == null ? null : expr(e.value())));
 				}
 				b.action(new ActionSchema(actor.getName(), a.getName(), params(a.getParameters()),

@@ -18,7 +18,7 @@ import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.triad.Situation;
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.State;
-import org.triad.runtime.pddl.PddlParser;
+import org.triad.planner.pddl.PddlParser;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.ModelGoal;
 import org.triad.runtime.schema.ModelPlanner;

@@ -19,24 +19,24 @@ import java.util.List;
 import java.util.Locale;
 import org.apache.logging.log4j.Level;
 import org.apache.logging.log4j.core.config.Configurator;
-import org.triad.runtime.pddl.Domain;
-import org.triad.runtime.pddl.PddlWriter;
-import org.triad.runtime.pddl.Problem;
-import org.triad.runtime.planning.GroundAction;
-import org.triad.runtime.planning.Plan;
-import org.triad.runtime.planning.PlanResult;
-import org.triad.runtime.planning.PlanValidator;
-import org.triad.runtime.planning.Planner;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.PddlStep;
+import org.triad.planner.PddlPlan;
+import org.triad.planner.SolveResult;
+import org.triad.planner.PlanValidator;
+import org.triad.planner.PddlPlanner;
 
 /**
- * PDDL4J 3.8.3 behind Triad's {@link Planner} interface. The AST is printed as PDDL and handed to
+ * PDDL4J 3.8.3 behind Triad's {@link PddlPlanner} interface. The AST is printed as PDDL and handed to
  * PDDL4J's parser; FF (enforced hill-climbing, then greedy search) or HSP searches with the timeout
  * passed explicitly in milliseconds (the default of 600 is silently read as ms). Calls are
  * serialised: PDDL4J keeps grounding state in static fields. Its loggers are switched off, since
  * without its memory-measuring agent every search logs an ERROR. Its plans are checked with
  * {@link PlanValidator}: 3.8.3 returns invalid plans on some inputs, reported here as errors.
  */
-public final class Pddl4jPlanner implements Planner {
+public final class Pddl4jPlanner implements PddlPlanner {
     /** Which PDDL4J search to run. */
     public enum Search { FF, HSP }
 
@@ -63,7 +63,7 @@ public final class Pddl4jPlanner implements Planner {
     }
 
     @Override
-    public PlanResult solve(Domain domain, Problem problem, Duration timeout) {
+    public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
         Path dir = null;
         try {
             dir = Files.createTempDirectory("triad-pddl4j");
@@ -71,21 +71,21 @@ public final class Pddl4jPlanner implements Planner {
             File p = dir.resolve("problem.pddl").toFile();
             Files.writeString(d.toPath(), PddlWriter.write(domain));
             Files.writeString(p.toPath(), PddlWriter.write(problem));
-            PlanResult r;
+            SolveResult r;
             synchronized (LOCK) {
                 r = solveLocked(d, p, timeout);
             }
             if (r.isSolved()) {
                 // PDDL4J 3.8.3 sometimes reports wrong plans (its encoding can drop actions or goals)
                 PlanValidator.Report report = PlanValidator.validate(domain, problem, r.plan());
-                if (!report.valid()) return PlanResult.error("PDDL4J returned a plan that does not validate: " + report.message());
+                if (!report.valid()) return SolveResult.error("PDDL4J returned a plan that does not validate: " + report.message());
             }
             return r;
         } catch (IOException e) {
-            return PlanResult.error("PDDL4J input could not be written: " + e.getMessage());
+            return SolveResult.error("PDDL4J input could not be written: " + e.getMessage());
         } catch (RuntimeException | StackOverflowError e) {
             // PDDL4J crashes on some inputs (e.g. exists, when): report, never propagate
-            return PlanResult.error("PDDL4J failed: " + e);
+            return SolveResult.error("PDDL4J failed: " + e);
         } finally {
             if (dir != null) {
                 dir.resolve("domain.pddl").toFile().delete();
@@ -95,7 +95,7 @@ public final class Pddl4jPlanner implements Planner {
         }
     }
 
-    private PlanResult solveLocked(File d, File p, Duration timeout) throws IOException {
+    private SolveResult solveLocked(File d, File p, Duration timeout) throws IOException {
         long start = System.nanoTime();
         ProblemFactory factory = new ProblemFactory();
         factory.setTraceLevel(0);
@@ -104,11 +104,11 @@ public final class Pddl4jPlanner implements Planner {
         for (Message.Type t : List.of(Message.Type.LEXICAL_ERROR, Message.Type.PARSER_ERROR)) {
             for (Message m : errors.getMessages(t)) messages.add(m.toString());
         }
-        if (!messages.isEmpty()) return PlanResult.error("PDDL4J rejects the input: " + String.join("; ", messages));
+        if (!messages.isEmpty()) return SolveResult.error("PDDL4J rejects the input: " + String.join("; ", messages));
         CodedProblem coded = factory.encode();
         double groundMs = (System.nanoTime() - start) / 1e6;
         if (!coded.isSolvable()) {
-            return PlanResult.unsolvable("PDDL4J's encoding simplified the goal to false", new PlanResult.Stats(groundMs, 0, 0, 0));
+            return SolveResult.unsolvable("PDDL4J's encoding simplified the goal to false", new SolveResult.Stats(groundMs, 0, 0, 0));
         }
         long remainingMs = Math.max(1, timeout.toMillis() - (long) groundMs);
         // FF runs enforced hill-climbing and then greedy search, each with the full limit (measured:
@@ -121,20 +121,20 @@ public final class Pddl4jPlanner implements Planner {
         long searchStart = System.nanoTime();
         fr.uga.pddl4j.util.Plan plan = planner.search(coded);
         double searchMs = (System.nanoTime() - searchStart) / 1e6;
-        PlanResult.Stats stats = new PlanResult.Stats(groundMs, searchMs, 0, 0);
+        SolveResult.Stats stats = new SolveResult.Stats(groundMs, searchMs, 0, 0);
         if (plan == null) {
             // 3.8.3 returns null both when the search space is exhausted and on timeout
             double limit = search == Search.FF ? 2.0 * timeoutMs : timeoutMs;
-            if (searchMs < 0.9 * limit) return PlanResult.unsolvable("PDDL4J's search ended without a plan", stats);
-            return PlanResult.timeout(stats);
+            if (searchMs < 0.9 * limit) return SolveResult.unsolvable("PDDL4J's search ended without a plan", stats);
+            return SolveResult.timeout(stats);
         }
         List<String> constants = coded.getConstants();
-        List<GroundAction> steps = new ArrayList<>();
+        List<PddlStep> steps = new ArrayList<>();
         for (BitOp op : plan.actions()) {
             List<String> args = new ArrayList<>(op.getArity());
             for (int i = 0; i < op.getArity(); i++) args.add(constants.get(op.getValueOfParameter(i)).toLowerCase(Locale.ROOT));
-            steps.add(new GroundAction(op.getName().toLowerCase(Locale.ROOT), args));
+            steps.add(new PddlStep(op.getName().toLowerCase(Locale.ROOT), args));
         }
-        return PlanResult.solved(new Plan(steps), stats);
+        return SolveResult.solved(new PddlPlan(steps), stats);
     }
 }

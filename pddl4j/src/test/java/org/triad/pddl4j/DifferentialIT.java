@@ -7,11 +7,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.triad.runtime.pddl.PddlWriter;
-import org.triad.runtime.planning.PlanResult;
-import org.triad.runtime.planning.PlanResult.Status;
-import org.triad.runtime.planning.PlanValidator;
-import org.triad.runtime.planning.TriadPlanner;
+import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.SolveResult;
+import org.triad.planner.SolveResult.Status;
+import org.triad.planner.PlanValidator;
+import org.triad.planner.TriadEngine;
 
 /**
  * Triad's engine against PDDL4J on seeded random typed STRIPS tasks with negative preconditions and
@@ -38,8 +38,8 @@ class DifferentialIT {
         long start = System.nanoTime();
         for (int i = 0; i < TASKS; i++) {
             RandomProblems.Task t = gen.next();
-            PlanResult ours = new TriadPlanner().solve(t.domain(), t.problem(), Duration.ofSeconds(5));
-            PlanResult theirs = pddl4j.solve(t.domain(), t.problem(), Duration.ofMillis(PDDL4J_TIMEOUT_MS));
+            SolveResult ours = new TriadEngine().solve(t.domain(), t.problem(), Duration.ofSeconds(5));
+            SolveResult theirs = pddl4j.solve(t.domain(), t.problem(), Duration.ofMillis(PDDL4J_TIMEOUT_MS));
             String label = "task " + i + "\n" + PddlWriter.write(t.domain()) + PddlWriter.write(t.problem());
             if (ours.status() != Status.SOLVED && ours.status() != Status.UNSOLVABLE) {
                 failures.add(label + "\ntriad: " + ours.status() + " " + ours.message());

@@ -3,12 +3,12 @@ package org.triad.pddl4j;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
-import org.triad.runtime.pddl.Domain;
-import org.triad.runtime.pddl.PddlParser;
-import org.triad.runtime.pddl.Problem;
-import org.triad.runtime.planning.PlanResult;
-import org.triad.runtime.planning.Planner;
-import org.triad.runtime.planning.TriadPlanner;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.SolveResult;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.TriadEngine;
 
 /**
  * Benchmark main (not a test): PDDL4J FF against the Triad engine on small hospital problems, warm
@@ -34,11 +34,11 @@ public final class Pddl4jComparison {
     }
 
     /** Median ms and plan length (or the status) over 1 warm-up + 5 runs; one run if it fails. */
-    private static String[] measure(Planner fixed, Domain d, Problem p, Duration timeout) {
+    private static String[] measure(PddlPlanner fixed, Domain d, Problem p, Duration timeout) {
         double[] ms = new double[5];
-        PlanResult last = null;
+        SolveResult last = null;
         for (int i = 0; i < 6; i++) {
-            Planner planner = fixed != null ? fixed : new TriadPlanner();
+            PddlPlanner planner = fixed != null ? fixed : new TriadEngine();
             long t0 = System.nanoTime();
             last = planner.solve(d, p, timeout);
             double t = (System.nanoTime() - t0) / 1e6;

@@ -7,18 +7,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
-import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
-import org.triad.runtime.pddl.Domain;
-import org.triad.runtime.pddl.PddlParser;
-import org.triad.runtime.pddl.Problem;
-import org.triad.runtime.planning.PlanResult;
-import org.triad.runtime.planning.PlanValidator;
-import org.triad.runtime.planning.SolveCommand;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.SolveResult;
+import org.triad.planner.PlanValidator;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.PddlPlanners;
 
 class Pddl4jPlannerIT {
     static final String DOMAIN = """
@@ -43,8 +40,8 @@ class Pddl4jPlannerIT {
         Domain d = PddlParser.parseDomain(DOMAIN, "d");
         Problem p = PddlParser.parseProblem(PROBLEM, "p");
         for (Pddl4jPlanner.Search s : Pddl4jPlanner.Search.values()) {
-            PlanResult r = new Pddl4jPlanner(s).solve(d, p, Duration.ofSeconds(10));
-            assertEquals(PlanResult.Status.SOLVED, r.status(), s + ": " + r.message());
+            SolveResult r = new Pddl4jPlanner(s).solve(d, p, Duration.ofSeconds(10));
+            assertEquals(SolveResult.Status.SOLVED, r.status(), s + ": " + r.message());
             assertTrue(PlanValidator.validate(d, p, r.plan()).valid(), s + ": " + r.plan().toPddl());
             assertEquals("(load i b)", r.plan().steps().get(1).toString());
         }
@@ -54,39 +51,34 @@ class Pddl4jPlannerIT {
     void unreachableGoalIsNoPlanAndUnsupportedInputIsAnError() {
         Domain d = PddlParser.parseDomain(DOMAIN, "d");
         Problem island = PddlParser.parseProblem(PROBLEM.replace("(adj c r) (adj r c)", ""), "p");
-        PlanResult r = new Pddl4jPlanner().solve(d, island, Duration.ofSeconds(5));
+        SolveResult r = new Pddl4jPlanner().solve(d, island, Duration.ofSeconds(5));
         // PDDL4J 3.8.3 answers this one with a plan that does not reach the goal; the adapter's
         // validation turns that into an error instead of passing it on
-        assertTrue(r.status() == PlanResult.Status.UNSOLVABLE
-                || (r.status() == PlanResult.Status.ERROR && r.message().contains("does not validate")), r.status() + " " + r.message());
+        assertTrue(r.status() == SolveResult.Status.UNSOLVABLE
+                || (r.status() == SolveResult.Status.ERROR && r.message().contains("does not validate")), r.status() + " " + r.message());
         Problem unknown = PddlParser.parseProblem(PROBLEM.replace("(item-at i r)", "(item-at i nowhere)"), "p");
-        assertEquals(PlanResult.Status.ERROR, new Pddl4jPlanner().solve(d, unknown, Duration.ofSeconds(5)).status());
+        assertEquals(SolveResult.Status.ERROR, new Pddl4jPlanner().solve(d, unknown, Duration.ofSeconds(5)).status());
     }
 
     @Test
-    void solveCommandFindsThePlannerAndPrintsNoLoggingNoise(@TempDir Path dir) throws Exception {
-        Path d = dir.resolve("d.pddl");
-        Path p = dir.resolve("p.pddl");
-        Files.writeString(d, DOMAIN);
-        Files.writeString(p, PROBLEM);
+    void theRegistryFindsThePlannerByNameAndItPrintsNoLoggingNoise() {
         ByteArrayOutputStream console = new ByteArrayOutputStream();
         PrintStream oldOut = System.out;
         PrintStream oldErr = System.err;
         PrintStream capture = new PrintStream(console, true, StandardCharsets.UTF_8);
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code;
+        SolveResult r;
         try {
             System.setOut(capture);
             System.setErr(capture);
-            code = SolveCommand.run(List.of(d.toString(), p.toString(), "--planner", "pddl4j", "--timeout", "10"),
-                    new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+            PddlPlanner planner = PddlPlanners.byName("pddl4j");
+            assertEquals("pddl4j", planner.name());
+            r = planner.solve(PddlParser.parseDomain(DOMAIN, "d"), PddlParser.parseProblem(PROBLEM, "p"), Duration.ofSeconds(10));
         } finally {
             System.setOut(oldOut);
             System.setErr(oldErr);
         }
-        assertEquals(0, code, err.toString(StandardCharsets.UTF_8));
-        assertTrue(out.toString(StandardCharsets.UTF_8).endsWith("; cost = 5 (unit cost)\n"), out.toString(StandardCharsets.UTF_8));
+        assertEquals(SolveResult.Status.SOLVED, r.status(), r.message());
+        assertTrue(r.plan().toPddl().endsWith("; cost = 5 (unit cost)\n"), r.plan().toPddl());
         String noise = console.toString(StandardCharsets.UTF_8);
         assertFalse(noise.contains("ERROR") || noise.contains("Instrumentation"), noise);
     }

@@ -3,13 +3,13 @@ package org.triad.pddl4j;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import org.triad.runtime.pddl.Action;
-import org.triad.runtime.pddl.Domain;
-import org.triad.runtime.pddl.Effect;
-import org.triad.runtime.pddl.Formula;
-import org.triad.runtime.pddl.PredicateDecl;
-import org.triad.runtime.pddl.Problem;
-import org.triad.runtime.pddl.TypedName;
+import org.triad.planner.pddl.Action;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlEffect;
+import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.PredicateDecl;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.pddl.TypedName;
 
 /**
  * Seeded random typed STRIPS tasks: a small type hierarchy, predicates of arity 0-2, actions with
@@ -106,16 +106,16 @@ final class RandomProblems {
             Formula eq = new Formula.Equals("?v0", "?v1");
             pre.add(rnd.nextBoolean() ? new Formula.Not(eq) : eq);
         }
-        List<Effect> eff = new ArrayList<>();
+        List<PddlEffect> eff = new ArrayList<>();
         int nadd = 1 + rnd.nextInt(2);
         for (int i = 0; i < nadd; i++) {
             Formula.Atom a = atom(preds, params);
-            if (a != null) eff.add(new Effect.Add(a));
+            if (a != null) eff.add(new PddlEffect.Add(a));
         }
         int ndel = rnd.nextInt(3);
         for (int i = 0; i < ndel; i++) {
             Formula.Atom a = atom(preds, params);
-            if (a != null) eff.add(new Effect.Delete(a));
+            if (a != null) eff.add(new PddlEffect.Delete(a));
         }
         return new Action(name, params, new Formula.And(pre), eff);
     }

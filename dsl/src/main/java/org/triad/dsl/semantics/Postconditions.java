@@ -18,7 +18,7 @@ import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
 
 /**
- * Reads a postcondition as a conjunction of {@link Effect}s, the only form the planner and the
+ * Reads a postcondition as a conjunction of {@link PostconditionEffect}s, the only form the planner and the
  * dry-run actors can apply. Used by the validator (which reports what does not fit) and by the
  * generators and runtime translations (which rely on it fitting).
  */
@@ -34,11 +34,11 @@ public final class Postconditions {
 	}
 
 	/** The effects and the problems of a postcondition ({@code null} means no effects). */
-	public record Analysis(List<Effect> effects, List<Problem> problems) {
+	public record Analysis(List<PostconditionEffect> effects, List<Problem> problems) {
 	}
 
 	public static Analysis analyse(Expression post) {
-		List<Effect> effects = new ArrayList<>();
+		List<PostconditionEffect> effects = new ArrayList<>();
 		List<Problem> problems = new ArrayList<>();
 		if (post != null && !(post instanceof BooleanLiteral b && b.isValue())) {
 			collect(post, effects, problems);
@@ -62,18 +62,18 @@ public final class Postconditions {
 		}
 	}
 
-	private static void collect(Expression post, List<Effect> effects, List<Problem> problems) {
+	private static void collect(Expression post, List<PostconditionEffect> effects, List<Problem> problems) {
 		for (Expression c : conjuncts(post)) {
 			if (c instanceof PropertyCall call) {
 				if (isBoolean(call)) {
-					effects.add(new Effect(call, true, null));
+					effects.add(new PostconditionEffect(call, true, null));
 				} else {
 					problems.add(new Problem(c, "effect on non-boolean property '" + name(call) + "' must assign a value: '"
 							+ name(call) + "(...) == value'"));
 				}
 			} else if (c instanceof NotExpression n && n.getOperand() instanceof PropertyCall call) {
 				if (isBoolean(call)) {
-					effects.add(new Effect(call, false, null));
+					effects.add(new PostconditionEffect(call, false, null));
 				} else {
 					problems.add(new Problem(c, "'!' applies to boolean properties only, not to '" + name(call) + "'"));
 				}
@@ -85,7 +85,7 @@ public final class Postconditions {
 					problems.add(new Problem(b.getRight(), "the value assigned to '" + name(call)
 							+ "' must be a parameter, a literal or an enumeration literal", true));
 				} else {
-					effects.add(new Effect(call, true, b.getRight()));
+					effects.add(new PostconditionEffect(call, true, b.getRight()));
 				}
 			} else {
 				problems.add(new Problem(c, "a postcondition is a conjunction (&&) of effects: 'p(...)', '!p(...)' or 'f(...) == value'"));

@@ -14,7 +14,7 @@ import org.eclipse.xtext.resource.IResourceDescriptions;
 import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.CheckType;
-import org.triad.dsl.semantics.Effect;
+import org.triad.dsl.semantics.PostconditionEffect;
 import org.triad.dsl.semantics.Postconditions;
 import org.triad.dsl.triad.Action;
 import org.triad.dsl.triad.Actor;
@@ -61,8 +61,8 @@ public class TriadActorValidator extends AbstractTriadActorValidator {
 			error(problem.message(), at.eContainer(), at.eContainmentFeature(), indexIn(at),
 					analysisCode(problem), new String[0]);
 		}
-		Map<String, Effect> byTarget = new HashMap<>();
-		for (Effect effect : analysis.effects()) {
+		Map<String, PostconditionEffect> byTarget = new HashMap<>();
+		for (PostconditionEffect effect : analysis.effects()) {
 			if (effect.isAssignment()) {
 				TriadType target = TriadTypeSystem.typeOf(effect.call());
 				TriadType value = TriadTypeSystem.typeOf(effect.value());
@@ -73,7 +73,7 @@ public class TriadActorValidator extends AbstractTriadActorValidator {
 				}
 			}
 			String key = targetKey(effect.call(), action);
-			Effect previous = byTarget.put(key, effect);
+			PostconditionEffect previous = byTarget.put(key, effect);
 			if (previous != null) {
 				error("the postcondition of '" + action.getName() + "' sets '" + key + "' twice", effect.call().eContainer(),
 						effect.call().eContainmentFeature(), ActorIssueCodes.CONFLICTING_EFFECTS);

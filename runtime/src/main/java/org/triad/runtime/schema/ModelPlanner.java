@@ -6,11 +6,11 @@ import java.util.Map;
 
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
-import org.triad.runtime.pddl.PddlParser;
-import org.triad.runtime.planning.GroundAction;
-import org.triad.runtime.planning.PlanResult;
-import org.triad.runtime.planning.Planner;
-import org.triad.runtime.planning.TriadPlanner;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.PddlStep;
+import org.triad.planner.SolveResult;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.TriadEngine;
 
 /**
  * Plans a goal of an application from a state: translates to PDDL, runs the configured planner,
@@ -20,14 +20,14 @@ import org.triad.runtime.planning.TriadPlanner;
 public final class ModelPlanner {
 	private final AppSchema schema;
 	private final PddlTranslator translator;
-	private final Planner planner;
+	private final PddlPlanner planner;
 	private final Duration timeout;
 
 	public ModelPlanner(AppSchema schema) {
-		this(schema, new TriadPlanner(), Duration.ofSeconds(30));
+		this(schema, new TriadEngine(), Duration.ofSeconds(30));
 	}
 
-	public ModelPlanner(AppSchema schema, Planner planner, Duration timeout) {
+	public ModelPlanner(AppSchema schema, PddlPlanner planner, Duration timeout) {
 		this.schema = schema;
 		this.translator = new PddlTranslator(schema);
 		this.planner = planner;
@@ -53,7 +53,7 @@ public final class ModelPlanner {
 	public Outcome plan(GoalSchema goal, Map<String, Object> binding, State from) {
 		try {
 			PddlTranslator.Task task = translator.translate(from, goal, binding);
-			PlanResult result = planner.solve(PddlParser.parseDomain(task.domain(), "domain.pddl"),
+			SolveResult result = planner.solve(PddlParser.parseDomain(task.domain(), "domain.pddl"),
 					PddlParser.parseProblem(task.problem(), "problem.pddl"), timeout);
 			if (!result.isSolved()) {
 				return new Outcome(null, switch (result.status()) {
@@ -62,8 +62,8 @@ public final class ModelPlanner {
 					default -> "planner error: " + result.message();
 				});
 			}
-			List<GroundAction> steps = result.plan().steps();
-			return new Outcome(task.plan(steps.stream().map(GroundAction::name).toList(), steps.stream().map(GroundAction::args).toList()), null);
+			List<PddlStep> steps = result.plan().steps();
+			return new Outcome(task.plan(steps.stream().map(PddlStep::name).toList(), steps.stream().map(PddlStep::args).toList()), null);
 		} catch (PddlTranslationException | ModelEvaluationException e) {
 			return new Outcome(null, e.getMessage());
 		} catch (RuntimeException e) {

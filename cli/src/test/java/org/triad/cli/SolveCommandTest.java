@@ -1,0 +1,91 @@
+package org.triad.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.triad.cli.TriadCliTest.Run;
+
+/** {@code triad solve} as a user meets it: plans, plan files, exit codes and one-line errors. */
+class SolveCommandTest {
+	private static final Path HOSPITAL = Path.of("..", "planner", "src", "test", "resources", "pddl", "hospital");
+	private static final String DOMAIN = HOSPITAL.resolve("domain.pddl").toString();
+	private static final String PROBLEM = HOSPITAL.resolve("p-10-a.pddl").toString();
+
+	@TempDir
+	Path dir;
+
+	@Test
+	void printsAPlanVALReadsAndWritesThePlanFile() throws IOException {
+		Path plan = dir.resolve("plan.txt");
+		Run run = TriadCliTest.run("solve", DOMAIN, PROBLEM, "-o", plan.toString(), "--timeout", "20");
+		assertEquals(0, run.exit(), run.err());
+		List<String> lines = run.out().lines().toList();
+		assertEquals("; cost = 3 (unit cost)", lines.get(lines.size() - 1));
+		assertTrue(lines.get(0).matches("\\(move wp0 \\S+\\)"), lines.get(0));
+		assertEquals(run.out(), Files.readString(plan));
+	}
+
+	@Test
+	void helpNamesEveryOption() {
+		Run run = TriadCliTest.run("solve", "--help");
+		assertEquals(0, run.exit(), run.err());
+		for (String option : List.of("DOMAIN", "PROBLEM", "--plan", "--planner", "--timeout")) {
+			assertTrue(run.out().contains(option), option + " in " + run.out());
+		}
+	}
+
+	@Test
+	void exitsOneWithoutAPlan() throws IOException {
+		Path problem = dir.resolve("island.pddl");
+		Files.writeString(problem, "(define (problem island) (:domain hospital) (:objects a b - waypoint)"
+				+ " (:init (robot-at a) (hand-empty)) (:goal (robot-at b)))");
+		Run run = TriadCliTest.run("solve", DOMAIN, problem.toString());
+		assertEquals(1, run.exit(), run.err());
+		assertTrue(run.err().startsWith("no plan: problem is unsolvable"), run.err());
+	}
+
+	@Test
+	void exitsTwoWithOneLineOnUsageAndInputErrors() throws IOException {
+		Run one = TriadCliTest.run("solve", "only-one.pddl");
+		assertEquals(2, one.exit());
+		assertTrue(one.err().contains("Missing required parameter: 'PROBLEM'"), one.err());
+
+		Run unknown = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--planner", "metric-ff");
+		assertEquals(2, unknown.exit());
+		assertTrue(unknown.err().contains("unknown planner 'metric-ff'"), unknown.err());
+
+		Run missing = TriadCliTest.run("solve", dir.resolve("missing.pddl").toString(), PROBLEM);
+		assertEquals(2, missing.exit());
+		assertTrue(missing.err().startsWith("error: no such file: "), missing.err());
+
+		Path bad = dir.resolve("bad.pddl");
+		Files.writeString(bad, "(define (domain d)\n  (:predicates (p))\n  (:action a :parameters () :effect (q)))\n");
+		Run undeclared = TriadCliTest.run("solve", bad.toString(), PROBLEM);
+		assertEquals(2, undeclared.exit());
+		assertTrue(undeclared.err().startsWith("error: " + bad + ":3:3: action 'a' uses undeclared predicate 'q'"), undeclared.err());
+
+		Run soon = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--timeout", "soon");
+		assertEquals(2, soon.exit());
+		assertTrue(soon.err().contains("'soon' is not a double"), soon.err());
+
+		Run negative = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--timeout", "-1");
+		assertEquals(2, negative.exit());
+		assertTrue(negative.err().contains("--timeout must be a positive number of seconds"), negative.err());
+	}
+
+	@Test
+	void anUnwritablePlanFileIsAnErrorWithItsCause() throws IOException {
+		Path notAFolder = dir.resolve("file");
+		Files.writeString(notAFolder, "x");
+		Run run = TriadCliTest.run("solve", DOMAIN, PROBLEM, "-o", notAFolder.resolve("plan.txt").toString());
+		assertEquals(2, run.exit());
+		assertTrue(run.err().startsWith("error: cannot write the plan file "), run.err());
+	}
+}

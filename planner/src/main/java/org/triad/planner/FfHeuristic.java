@@ -1,0 +1,171 @@
+package org.triad.planner;
+
+/**
+ * The FF heuristic: a relaxed planning graph explored breadth-first from the state (ignoring
+ * deletes and negative preconditions) until all goals are reached, then a relaxed plan extracted
+ * backwards through first achievers. Its operators applicable in the state are the helpful actions.
+ * Scratch arrays are reused and invalidated by an epoch counter, so an evaluation only touches the
+ * part of the graph it explores.
+ */
+final class FfHeuristic {
+    static final int INFINITE = Integer.MAX_VALUE;
+
+    private final SearchTask t;
+    private final int[] level;
+    private final int[] factEpoch;
+    private final int[] supporter;
+    /** Per operator, interleaved for locality: [2o] = epoch of last touch, [2o+1] = unsatisfied preconditions. */
+    private final int[] opState;
+    /** Compressed rows: operators having fact f as a precondition are preOps[preStart[f] .. preStart[f+1]). */
+    private final int[] preStart;
+    private final int[] preOps;
+    private final int[] preCount;
+    private final int[] addStart;
+    private final int[] addFacts;
+    private final int[] opMark;
+    private final int[] factMark;
+    private final int[] queue;
+    private final int[] stack;
+    private int epoch;
+    private int[] helpful = new int[16];
+    private int helpfulCount;
+
+    FfHeuristic(SearchTask t) {
+        this.t = t;
+        int nf = t.numFacts;
+        int no = t.ops.length;
+        level = new int[nf];
+        factEpoch = new int[nf];
+        supporter = new int[nf];
+        opState = new int[2 * no];
+        preStart = new int[nf + 1];
+        int total = 0;
+        for (int f = 0; f < nf; f++) {
+            preStart[f] = total;
+            total += t.preOf[f].length;
+        }
+        preStart[nf] = total;
+        preOps = new int[total];
+        for (int f = 0; f < nf; f++) System.arraycopy(t.preOf[f], 0, preOps, preStart[f], t.preOf[f].length);
+        preCount = new int[no];
+        addStart = new int[no + 1];
+        int adds = 0;
+        for (int o = 0; o < no; o++) {
+            preCount[o] = t.pre[o].length;
+            addStart[o] = adds;
+            adds += t.add[o].length;
+        }
+        addStart[no] = adds;
+        addFacts = new int[adds];
+        for (int o = 0; o < no; o++) System.arraycopy(t.add[o], 0, addFacts, addStart[o], t.add[o].length);
+        opMark = new int[no];
+        factMark = new int[nf];
+        queue = new int[nf];
+        stack = new int[nf];
+    }
+
+    int helpfulCount() {
+        return helpfulCount;
+    }
+
+    int helpful(int i) {
+        return helpful[i];
+    }
+
+    /** Relaxed plan length, or {@link #INFINITE} when the goals are unreachable even relaxed. */
+    int evaluate(int[] state, int[] goals) {
+        epoch++;
+        helpfulCount = 0;
+        int head = 0;
+        int tail = 0;
+        for (int f : state) {
+            factEpoch[f] = epoch;
+            level[f] = 0;
+            supporter[f] = -1;
+            queue[tail++] = f;
+        }
+        int missing = 0;
+        for (int g : goals) if (factEpoch[g] != epoch) missing++;
+        if (missing == 0) return 0;
+        for (int o : t.noPre) {
+            for (int a : t.add[o]) {
+                if (factEpoch[a] != epoch) {
+                    factEpoch[a] = epoch;
+                    level[a] = 1;
+                    supporter[a] = o;
+                    queue[tail++] = a;
+                }
+            }
+        }
+        // Goals reached count is checked when facts are reached, so we can stop early.
+        int[] goalMark = factMark; // reused: marks goals with -epoch during exploration
+        for (int g : goals) goalMark[g] = -epoch;
+        for (int i = 0; i < tail; i++) {
+            if (goalMark[queue[i]] == -epoch && level[queue[i]] > 0) missing--;
+        }
+        while (head < tail && missing > 0) {
+            int f = queue[head++];
+            int lf = level[f];
+            for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
+                int o = preOps[i];
+                int pc = preCount[o];
+                if (pc > 1) {
+                    int s2 = o << 1;
+                    if (opState[s2] != epoch) {
+                        opState[s2] = epoch;
+                        opState[s2 + 1] = pc - 1;
+                        continue;
+                    }
+                    if (--opState[s2 + 1] != 0) continue;
+                }
+                for (int j = addStart[o], aend = addStart[o + 1]; j < aend; j++) {
+                    int a = addFacts[j];
+                    {
+                        if (factEpoch[a] != epoch) {
+                            factEpoch[a] = epoch;
+                            level[a] = lf + 1;
+                            supporter[a] = o;
+                            queue[tail++] = a;
+                            if (goalMark[a] == -epoch) missing--;
+                        }
+                    }
+                }
+            }
+        }
+        if (missing > 0) {
+            for (int g : goals) goalMark[g] = 0;
+            return INFINITE;
+        }
+        for (int g : goals) goalMark[g] = 0;
+        int h = 0;
+        int sp = 0;
+        for (int g : goals) {
+            if (level[g] > 0 && factMark[g] != epoch) {
+                factMark[g] = epoch;
+                stack[sp++] = g;
+            }
+        }
+        while (sp > 0) {
+            int f = stack[--sp];
+            int o = supporter[f];
+            if (opMark[o] == epoch) continue;
+            opMark[o] = epoch;
+            h++;
+            boolean applicable = true;
+            for (int p : t.pre[o]) {
+                if (level[p] > 0) {
+                    applicable = false;
+                    if (factMark[p] != epoch) {
+                        factMark[p] = epoch;
+                        stack[sp++] = p;
+                    }
+                }
+            }
+            if (applicable) {
+                if (helpfulCount == helpful.length) helpful = java.util.Arrays.copyOf(helpful, helpfulCount * 2);
+                helpful[helpfulCount++] = o;
+            }
+        }
+        return h;
+    }
+}

@@ -1,0 +1,113 @@
+package org.triad.planner;
+
+import java.util.Arrays;
+
+/**
+ * Lazy greedy best-first search with preferred operators and two heuristics, as in LAMA's first
+ * iteration: a successor is queued under its parent's values and evaluated only when expanded.
+ * Three queues (FF over all successors, FF and landmark count over preferred successors; a fourth
+ * landmark queue over all successors costs too much memory on wide tasks such as logistics) are
+ * used round-robin, and the preferred ones are boosted every time either heuristic improves. Complete with a closed
+ * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
+ */
+final class LazyGreedySearch {
+    private final FfHeuristic heuristic;
+    private final Landmarks landmarks;
+    private final Successors successors;
+    private final long deadline;
+
+    private int[] entryParent = new int[1024];
+    private int[] entryOp = new int[1024];
+    private int entries;
+
+    /** {@code landmarks} may be null: then only the FF queues are used. */
+    LazyGreedySearch(FfHeuristic heuristic, Landmarks landmarks, Successors successors, long deadlineNanos) {
+        this.heuristic = heuristic;
+        this.landmarks = landmarks;
+        this.successors = successors;
+        this.deadline = deadlineNanos;
+    }
+
+    private int entry(int parent, int op) {
+        if (entries == entryParent.length) {
+            int cap = entries + (entries >> 1);
+            entryParent = Arrays.copyOf(entryParent, cap);
+            entryOp = Arrays.copyOf(entryOp, cap);
+        }
+        entryParent[entries] = parent;
+        entryOp[entries] = op;
+        return entries++;
+    }
+
+    BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg) {
+        StateSpace space = new StateSpace();
+        int nq = landmarks == null ? 2 : 3;
+        LongHeap[] queues = new LongHeap[nq];
+        for (int i = 0; i < nq; i++) queues[i] = new LongHeap();
+        int[] priority = new int[nq];
+        long[][] accepted = landmarks == null ? null : new long[1024][];
+        long expanded = 0;
+        long evaluated = 0;
+        int bestFf = Integer.MAX_VALUE;
+        int bestLm = Integer.MAX_VALUE;
+        queues[0].push(0, entry(-1, -1));
+        while (true) {
+            int qi = -1;
+            for (int i = 0; i < nq; i++) {
+                if (!queues[i].isEmpty() && (qi < 0 || priority[i] < priority[qi])) qi = i;
+            }
+            if (qi < 0) break;
+            priority[qi]++;
+            if ((evaluated & 7) == 0 && System.nanoTime() > deadline) {
+                return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
+            }
+            int e = queues[qi].pop();
+            int parent = entryParent[e];
+            int op = entryOp[e];
+            int[] state = parent < 0 ? init : successors.apply(space.state(parent), op);
+            if (space.find(state) >= 0) continue;
+            int g = parent < 0 ? 0 : space.g(parent) + 1;
+            int h = heuristic.evaluate(state, goalPos);
+            evaluated++;
+            int node = space.add(state, parent, op, g, h);
+            if (h == FfHeuristic.INFINITE) continue;
+            if (Successors.satisfies(state, goalPos, goalNeg)) {
+                return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
+            }
+            expanded++;
+            boolean progress = false;
+            if (h < bestFf) {
+                bestFf = h;
+                progress = true;
+            }
+            int hl = 0;
+            if (landmarks != null) {
+                if (node >= accepted.length) accepted = Arrays.copyOf(accepted, accepted.length * 2);
+                accepted[node] = landmarks.accept(parent < 0 ? null : accepted[parent], state);
+                hl = landmarks.value(accepted[node], state);
+                if (hl < bestLm) {
+                    bestLm = hl;
+                    progress = true;
+                }
+            }
+            if (progress) {
+                priority[1] -= 1000;
+                if (nq == 3) priority[2] -= 1000;
+            }
+            int nh = heuristic.helpfulCount();
+            int[] helpful = new int[nh];
+            for (int i = 0; i < nh; i++) helpful[i] = heuristic.helpful(i);
+            Arrays.sort(helpful);
+            int n = successors.applicable(state);
+            for (int i = 0; i < n; i++) {
+                int o = successors.get(i);
+                int id = entry(node, o);
+                boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
+                queues[0].push(h, id);
+                if (preferred) queues[1].push(h, id);
+                if (preferred && nq == 3) queues[2].push(hl, id);
+            }
+        }
+        return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);
+    }
+}

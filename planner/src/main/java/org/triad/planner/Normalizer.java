@@ -1,0 +1,161 @@
+package org.triad.planner;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.triad.planner.pddl.PddlEffect;
+import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.NumericTerm;
+import org.triad.planner.pddl.TypedName;
+
+/**
+ * Rewrites formulas into disjunctive normal form over literals, expanding quantifiers over the
+ * (finite) objects of their types, and flattens quantified effects. Only action parameters stay as
+ * variables.
+ */
+final class Normalizer {
+    /** Limit on DNF size: beyond it the domain needs a smarter compilation than we do. */
+    static final int MAX_DISJUNCTS = 4096;
+
+    /** A literal: an atom or an equality ({@code atom == null}), positive or negated. */
+    record Lit(Formula.Atom atom, String left, String right, boolean positive) { }
+
+    /** A literal effect after quantifier expansion. */
+    record EffectLit(Formula.Atom atom, boolean add) { }
+
+    private final ObjectUniverse universe;
+
+    Normalizer(ObjectUniverse universe) {
+        this.universe = universe;
+    }
+
+    List<List<Lit>> dnf(Formula f) {
+        return dnf(f, Map.of(), false);
+    }
+
+    private List<List<Lit>> dnf(Formula f, Map<String, String> subst, boolean negated) {
+        if (f instanceof Formula.Atom a) {
+            List<String> args = new ArrayList<>(a.args().size());
+            for (String t : a.args()) args.add(subst.getOrDefault(t, t));
+            return single(new Lit(new Formula.Atom(a.predicate(), args), null, null, !negated));
+        }
+        if (f instanceof Formula.Equals e) {
+            return single(new Lit(null, subst.getOrDefault(e.left(), e.left()), subst.getOrDefault(e.right(), e.right()), !negated));
+        }
+        if (f instanceof Formula.Not n) return dnf(n.body(), subst, !negated);
+        if (f instanceof Formula.Imply i) {
+            return dnf(new Formula.Or(List.of(new Formula.Not(i.condition()), i.consequence())), subst, negated);
+        }
+        if (f instanceof Formula.And a) {
+            return negated ? union(a.parts(), subst, true) : product(a.parts(), subst, false);
+        }
+        if (f instanceof Formula.Or o) {
+            return negated ? product(o.parts(), subst, true) : union(o.parts(), subst, false);
+        }
+        boolean universal = f instanceof Formula.Forall;
+        List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
+        Formula body = universal ? ((Formula.Forall) f).body() : ((Formula.Exists) f).body();
+        List<Map<String, String>> bindings = bindings(vars, subst);
+        List<List<Lit>> out = null;
+        boolean conjunctive = universal != negated;
+        for (Map<String, String> b : bindings) {
+            List<List<Lit>> d = dnf(body, b, negated);
+            out = out == null ? d : conjunctive ? cross(out, d) : concat(out, d);
+        }
+        if (out == null) return conjunctive ? single() : List.of();
+        return out;
+    }
+
+    List<Map<String, String>> bindings(List<TypedName> vars, Map<String, String> base) {
+        List<Map<String, String>> out = new ArrayList<>();
+        out.add(new HashMap<>(base));
+        for (TypedName v : vars) {
+            int[] objs = universe.ofTypes(v.types());
+            List<Map<String, String>> next = new ArrayList<>();
+            for (Map<String, String> m : out) {
+                for (int o : objs) {
+                    Map<String, String> n = new HashMap<>(m);
+                    n.put(v.name(), universe.names.get(o));
+                    next.add(n);
+                }
+            }
+            out = next;
+        }
+        return out;
+    }
+
+    private static List<List<Lit>> single(Lit... lits) {
+        List<List<Lit>> out = new ArrayList<>();
+        out.add(new ArrayList<>(List.of(lits)));
+        return out;
+    }
+
+    private List<List<Lit>> product(List<Formula> parts, Map<String, String> subst, boolean negated) {
+        List<List<Lit>> acc = single();
+        for (Formula p : parts) acc = cross(acc, dnf(p, subst, negated));
+        return acc;
+    }
+
+    private List<List<Lit>> union(List<Formula> parts, Map<String, String> subst, boolean negated) {
+        List<List<Lit>> acc = new ArrayList<>();
+        for (Formula p : parts) acc = concat(acc, dnf(p, subst, negated));
+        return acc;
+    }
+
+    private static List<List<Lit>> cross(List<List<Lit>> a, List<List<Lit>> b) {
+        if ((long) a.size() * b.size() > MAX_DISJUNCTS) {
+            throw new PlanningInputException("formula too large in disjunctive normal form (> " + MAX_DISJUNCTS + " disjuncts)");
+        }
+        List<List<Lit>> out = new ArrayList<>(a.size() * b.size());
+        for (List<Lit> x : a) {
+            for (List<Lit> y : b) {
+                List<Lit> c = new ArrayList<>(x.size() + y.size());
+                c.addAll(x);
+                c.addAll(y);
+                out.add(c);
+            }
+        }
+        return out;
+    }
+
+    private static List<List<Lit>> concat(List<List<Lit>> a, List<List<Lit>> b) {
+        if (a.size() + b.size() > MAX_DISJUNCTS) {
+            throw new PlanningInputException("formula too large in disjunctive normal form (> " + MAX_DISJUNCTS + " disjuncts)");
+        }
+        List<List<Lit>> out = new ArrayList<>(a);
+        out.addAll(b);
+        return out;
+    }
+
+    /** Literal effects with {@code forall} expanded; {@code costs} receives the {@code increase} amounts. */
+    void effects(List<PddlEffect> effects, Map<String, String> subst, List<EffectLit> out, List<NumericTerm> costs) {
+        for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.Add a) {
+                out.add(new EffectLit(substitute(a.atom(), subst), true));
+            } else if (e instanceof PddlEffect.Delete d) {
+                out.add(new EffectLit(substitute(d.atom(), subst), false));
+            } else if (e instanceof PddlEffect.Forall q) {
+                for (Map<String, String> b : bindings(q.variables(), subst)) effects(q.body(), b, out, costs);
+            } else if (e instanceof PddlEffect.Increase i) {
+                if (!i.function().equals("total-cost")) {
+                    throw new PlanningInputException("only (increase (total-cost) ...) is supported, found function '" + i.function() + "'");
+                }
+                NumericTerm amount = i.amount();
+                if (amount instanceof NumericTerm.Function fn && !subst.isEmpty()) {
+                    List<String> args = new ArrayList<>();
+                    for (String t : fn.args()) args.add(subst.getOrDefault(t, t));
+                    amount = new NumericTerm.Function(fn.name(), args);
+                }
+                costs.add(amount);
+            }
+        }
+    }
+
+    private static Formula.Atom substitute(Formula.Atom a, Map<String, String> subst) {
+        if (subst.isEmpty()) return a;
+        List<String> args = new ArrayList<>(a.args().size());
+        for (String t : a.args()) args.add(subst.getOrDefault(t, t));
+        return new Formula.Atom(a.predicate(), args);
+    }
+}

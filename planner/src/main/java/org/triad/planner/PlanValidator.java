@@ -1,0 +1,141 @@
+package org.triad.planner;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.triad.planner.pddl.Action;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlEffect;
+import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.pddl.Problem;
+import org.triad.planner.pddl.TypedName;
+
+/**
+ * Replays a plan on the lifted domain (independently of the grounder): checks each step's action,
+ * argument types and precondition, applies deletes then adds, and checks the goal at the end.
+ */
+public final class PlanValidator {
+    private PlanValidator() { }
+
+    /** {@code failedStep} is the 0-based index of the first bad step, or -1. */
+    public record Report(boolean valid, int failedStep, String message, boolean goalReached) {
+        @Override
+        public String toString() {
+            return valid ? "valid" : message;
+        }
+    }
+
+    public static Report validate(Domain domain, Problem problem, PddlPlan plan) {
+        ObjectUniverse universe;
+        try {
+            universe = new ObjectUniverse(domain, problem);
+        } catch (PlanningInputException e) {
+            return new Report(false, -1, e.getMessage(), false);
+        }
+        Set<Formula.Atom> state = new HashSet<>(problem.init());
+        Evaluator ev = new Evaluator(universe, state);
+        for (int i = 0; i < plan.steps().size(); i++) {
+            PddlStep step = plan.steps().get(i);
+            String where = "step " + (i + 1) + " " + step + ": ";
+            Action a = domain.action(step.name());
+            if (a == null) return new Report(false, i, where + "unknown action '" + step.name() + "'", false);
+            if (a.parameters().size() != step.args().size()) {
+                return new Report(false, i, where + "'" + a.name() + "' takes " + a.parameters().size() + " arguments", false);
+            }
+            Map<String, String> binding = new HashMap<>();
+            for (int k = 0; k < a.parameters().size(); k++) {
+                TypedName p = a.parameters().get(k);
+                String arg = step.args().get(k);
+                Integer id = universe.ids.get(arg);
+                if (id == null) return new Report(false, i, where + "unknown object '" + arg + "'", false);
+                if (!universe.isOf(id, p.types())) {
+                    return new Report(false, i, where + "'" + arg + "' is not of type " + String.join("|", p.types()) + " for " + p.name(), false);
+                }
+                binding.put(p.name(), arg);
+            }
+            String failure = ev.explainFalse(a.precondition(), binding);
+            if (failure != null) return new Report(false, i, where + "precondition not satisfied: " + failure, false);
+            List<Formula.Atom> adds = new ArrayList<>();
+            List<Formula.Atom> dels = new ArrayList<>();
+            ev.effects(a.effects(), binding, adds, dels);
+            state.removeAll(dels);
+            state.addAll(adds);
+        }
+        String goalFailure = ev.explainFalse(problem.goal(), Map.of());
+        if (goalFailure != null) return new Report(false, -1, "goal not satisfied at the end: " + goalFailure, false);
+        return new Report(true, -1, "valid", true);
+    }
+
+    private static final class Evaluator {
+        private final ObjectUniverse universe;
+        private final Set<Formula.Atom> state;
+
+        Evaluator(ObjectUniverse universe, Set<Formula.Atom> state) {
+            this.universe = universe;
+            this.state = state;
+        }
+
+        private Formula.Atom ground(Formula.Atom a, Map<String, String> b) {
+            List<String> args = new ArrayList<>(a.args().size());
+            for (String t : a.args()) args.add(b.getOrDefault(t, t));
+            return new Formula.Atom(a.predicate(), args);
+        }
+
+        /** Null when the formula holds, else a description of a false part. */
+        String explainFalse(Formula f, Map<String, String> b) {
+            if (f instanceof Formula.Atom a) {
+                Formula.Atom g = ground(a, b);
+                return state.contains(g) ? null : PddlWriter.atom(g) + " is false";
+            }
+            if (f instanceof Formula.Equals e) {
+                String l = b.getOrDefault(e.left(), e.left());
+                String r = b.getOrDefault(e.right(), e.right());
+                return l.equals(r) ? null : "(= " + l + " " + r + ") is false";
+            }
+            if (f instanceof Formula.Not n) {
+                if (n.body() instanceof Formula.Atom a) {
+                    Formula.Atom g = ground(a, b);
+                    return state.contains(g) ? PddlWriter.atom(g) + " is true" : null;
+                }
+                return explainFalse(n.body(), b) == null ? "(not " + PddlWriter.formula(n.body()) + ") is false" : null;
+            }
+            if (f instanceof Formula.And and) {
+                for (Formula p : and.parts()) {
+                    String r = explainFalse(p, b);
+                    if (r != null) return r;
+                }
+                return null;
+            }
+            if (f instanceof Formula.Or or) {
+                for (Formula p : or.parts()) if (explainFalse(p, b) == null) return null;
+                return "no disjunct of " + PddlWriter.formula(f) + " holds";
+            }
+            if (f instanceof Formula.Imply i) {
+                return explainFalse(i.condition(), b) != null ? null : explainFalse(i.consequence(), b);
+            }
+            boolean universal = f instanceof Formula.Forall;
+            List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
+            Formula body = universal ? ((Formula.Forall) f).body() : ((Formula.Exists) f).body();
+            for (Map<String, String> nb : new Normalizer(universe).bindings(vars, b)) {
+                String r = explainFalse(body, nb);
+                if (universal && r != null) return r;
+                if (!universal && r == null) return null;
+            }
+            return universal ? null : "no witness for " + PddlWriter.formula(f);
+        }
+
+        void effects(List<PddlEffect> effects, Map<String, String> b, List<Formula.Atom> adds, List<Formula.Atom> dels) {
+            for (PddlEffect e : effects) {
+                if (e instanceof PddlEffect.Add a) adds.add(ground(a.atom(), b));
+                else if (e instanceof PddlEffect.Delete d) dels.add(ground(d.atom(), b));
+                else if (e instanceof PddlEffect.Forall q) {
+                    for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,140 @@
+package org.triad.planner;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The search-time view of a grounded problem: operators as int arrays over fact ids, with the
+ * indexes heuristics and successor generation need. States are sorted int arrays of true facts.
+ */
+final class SearchTask {
+    final int numFacts;
+    final GroundOp[] ops;
+    final int[][] pre;
+    final int[][] neg;
+    final int[][] add;
+    final int[][] del;
+    /** Operators having the fact as a positive precondition. */
+    final int[][] preOf;
+    /** Operators triggered for applicability tests by their first precondition. */
+    final int[][] firstPreOf;
+    final int[] noPre;
+    final Grounder grounder;
+    private int[][] addOf;
+    private int[][] delOf;
+    /** Relevant sub-tasks by their operator set: successive goals often need the same operators. */
+    private final java.util.Map<java.util.BitSet, SearchTask> subtasks = new java.util.LinkedHashMap<>(16, 0.75f, true);
+    /** Scratch space (heuristic and successor arrays) reused by the next solve that takes it. */
+    private final java.util.concurrent.atomic.AtomicReference<Scratch> scratch = new java.util.concurrent.atomic.AtomicReference<>();
+
+    private volatile CompressedGraphSearch.Structure graphStructure;
+
+    /** The token-graph split of this task, computed once (successive goals reuse the task). */
+    CompressedGraphSearch.Structure graphStructure() {
+        CompressedGraphSearch.Structure gs = graphStructure;
+        if (gs == null) {
+            gs = CompressedGraphSearch.structure(this);
+            graphStructure = gs;
+        }
+        return gs;
+    }
+
+    record Scratch(FfHeuristic heuristic, Successors successors) { }
+
+    Scratch takeScratch() {
+        Scratch s = scratch.getAndSet(null);
+        return s != null ? s : new Scratch(new FfHeuristic(this), new Successors(this));
+    }
+
+    void returnScratch(Scratch s) {
+        scratch.set(s);
+    }
+
+    SearchTask(Grounder grounder, List<GroundOp> opList, int numFacts) {
+        this.grounder = grounder;
+        this.numFacts = numFacts;
+        ops = opList.toArray(new GroundOp[0]);
+        int n = ops.length;
+        pre = new int[n][];
+        neg = new int[n][];
+        add = new int[n][];
+        del = new int[n][];
+        int[] preCount = new int[numFacts];
+        int[] firstCount = new int[numFacts];
+        List<Integer> none = new ArrayList<>();
+        for (int o = 0; o < n; o++) {
+            pre[o] = ops[o].pre();
+            neg[o] = ops[o].neg();
+            add[o] = ops[o].add();
+            del[o] = ops[o].del();
+            for (int f : pre[o]) preCount[f]++;
+            if (pre[o].length == 0) none.add(o); else firstCount[pre[o][0]]++;
+        }
+        preOf = new int[numFacts][];
+        firstPreOf = new int[numFacts][];
+        for (int f = 0; f < numFacts; f++) {
+            preOf[f] = new int[preCount[f]];
+            firstPreOf[f] = new int[firstCount[f]];
+        }
+        int[] fill = new int[numFacts];
+        int[] fill2 = new int[numFacts];
+        for (int o = 0; o < n; o++) {
+            for (int f : pre[o]) preOf[f][fill[f]++] = o;
+            if (pre[o].length > 0) firstPreOf[pre[o][0]][fill2[pre[o][0]]++] = o;
+        }
+        noPre = none.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static int[][] invert(int[][] lists, int numFacts) {
+        int[] count = new int[numFacts];
+        for (int[] l : lists) for (int f : l) count[f]++;
+        int[][] out = new int[numFacts][];
+        for (int f = 0; f < numFacts; f++) out[f] = new int[count[f]];
+        int[] fill = new int[numFacts];
+        for (int o = 0; o < lists.length; o++) for (int f : lists[o]) out[f][fill[f]++] = o;
+        return out;
+    }
+
+    /**
+     * The operators that can matter for the goal (backward relevance): achievers of relevant facts
+     * and deleters of facts that must be false (negative goals and preconditions), closed under
+     * their preconditions. Any plan stays a plan after dropping the other operators, so search and
+     * heuristic only need these.
+     */
+    synchronized SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
+        if (addOf == null) {
+            addOf = invert(add, numFacts);
+            delOf = invert(del, numFacts);
+        }
+        boolean[] posRel = new boolean[numFacts];
+        boolean[] negRel = new boolean[numFacts];
+        boolean[] opRel = new boolean[ops.length];
+        int[] stack = new int[2 * numFacts + 2];
+        int sp = 0;
+        for (int g : goalPos) if (!posRel[g]) { posRel[g] = true; stack[sp++] = g; }
+        for (int g : goalNeg) if (!negRel[g]) { negRel[g] = true; stack[sp++] = ~g; }
+        int count = 0;
+        while (sp > 0) {
+            int x = stack[--sp];
+            int[] ops = x >= 0 ? addOf[x] : delOf[~x];
+            for (int o : ops) {
+                if (opRel[o]) continue;
+                opRel[o] = true;
+                count++;
+                for (int p : pre[o]) if (!posRel[p]) { posRel[p] = true; stack[sp++] = p; }
+                for (int p : neg[o]) if (!negRel[p]) { negRel[p] = true; stack[sp++] = ~p; }
+            }
+        }
+        if (count == ops.length) return this;
+        java.util.BitSet key = new java.util.BitSet(ops.length);
+        for (int o = 0; o < ops.length; o++) if (opRel[o]) key.set(o);
+        SearchTask cached = subtasks.get(key);
+        if (cached != null) return cached;
+        List<GroundOp> kept = new ArrayList<>(count);
+        for (int o = 0; o < ops.length; o++) if (opRel[o]) kept.add(ops[o]);
+        SearchTask sub = new SearchTask(grounder, kept, numFacts);
+        subtasks.put(key, sub);
+        if (subtasks.size() > 16) subtasks.remove(subtasks.keySet().iterator().next());
+        return sub;
+    }
+}

@@ -1,0 +1,178 @@
+package org.triad.planner;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.Problem;
+
+/**
+ * Triad's own planning engine. Grounds through {@link GroundedProblemCache} (so successive goals on
+ * the same objects and static facts only pay for search), then:
+ * <ol>
+ * <li>a single open goal in a graph-like task (every relevant action needs one fact): breadth-first
+ *     search over facts ({@link UnaryGraphSearch}), exact;</li>
+ * <li>a single open goal in a task made of a token graph and a small remainder (a robot walking a
+ *     map and acting at places): A* over the states after non-move actions, runs of moves replaced
+ *     by shortest paths ({@link CompressedGraphSearch}), exact; if it exceeds its work bound:</li>
+ * <li>a single open goal otherwise: A* with the FF heuristic, bounded in evaluations (the FF
+ *     heuristic is not admissible, so shortest plans are likely, not guaranteed; on near-graph
+ *     tasks such as a delivery the relaxed plan is close to exact);</li>
+ * <li>several open goals: a goal agenda — greedy search on h with g tie-breaking, over helpful
+ *     actions only (then over all actions if that fails), for the first goal, then the first two, ... each stage
+ *     continuing from the previous stage's end state;</li>
+ * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
+ *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
+ *     exhausting it proves the problem unsolvable);</li>
+ * </ol>
+ * and finally removes redundant actions from the plan. Grounding is not interruptible: the timeout
+ * applies to search.
+ */
+public final class TriadEngine implements PddlPlanner {
+    /** Heuristic evaluations allowed to one bounded stage before falling back. */
+    static final long STAGE_EVALUATIONS = 10000;
+    /**
+     * Heuristic weight in goal-agenda stages: later stages start where the relaxed plan ignores the
+     * way back, so A* (and even weight 5) expands the whole f-plateau around the start; a dominant
+     * weight makes the stage greedy on h with ties broken by g, i.e. breadth-first across plateaus,
+     * which keeps stage plans short.
+     */
+    static final int STAGE_WEIGHT = 1000;
+    /**
+     * Work (graph nodes visited plus operators tried) allowed to {@link CompressedGraphSearch}
+     * before A* takes over (it also bounds the states kept): about 25 times what a delivery on a 2000-node map needs (12,000).
+     */
+    static final long GRAPH_SEARCH_WORK = 300_000;
+
+    private final GroundedProblemCache cache;
+
+    public TriadEngine() {
+        this(new GroundedProblemCache(8));
+    }
+
+    public TriadEngine(GroundedProblemCache cache) {
+        this.cache = cache;
+    }
+
+    public GroundedProblemCache cache() {
+        return cache;
+    }
+
+    @Override
+    public String name() {
+        return "triad";
+    }
+
+    @Override
+    public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
+        long start = System.nanoTime();
+        long deadline = start + timeout.toNanos();
+        GroundedProblem.Query q;
+        try {
+            q = cache.get(domain, problem).query(problem);
+        } catch (PlanningInputException e) {
+            return SolveResult.error(e.getMessage());
+        } catch (RuntimeException e) {
+            return SolveResult.error("internal error while grounding: " + e);
+        }
+        double groundMs = (System.nanoTime() - start) / 1e6;
+        long searchStart = System.nanoTime();
+        if (q.unsolvableReason() != null) {
+            return SolveResult.unsolvable(q.unsolvableReason(), new SolveResult.Stats(groundMs, 0, 0, 0));
+        }
+        SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
+        SearchTask.Scratch scratch = task.takeScratch();
+        try {
+            return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+        } finally {
+            task.returnScratch(scratch);
+        }
+    }
+
+    private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
+                              long searchStart, long deadline) {
+        BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
+        long[] effort = new long[2];
+        int[] plan = null;
+
+        List<Integer> open = new ArrayList<>();
+        for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
+        if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
+            plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
+            if (plan == null) return SolveResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
+        } else if (open.size() <= 1) {
+            boolean tryAstar = true;
+            if (CompressedGraphSearch.applies(task, q.init(), q.goalPos(), q.goalNeg())) {
+                CompressedGraphSearch.Result r = new CompressedGraphSearch(task, succ, deadline, GRAPH_SEARCH_WORK)
+                        .run(q.init(), q.goalPos(), q.goalNeg());
+                effort[0] += r.expanded();
+                effort[1] += r.generated();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                    return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+                }
+                tryAstar = r.outcome() == BestFirstSearch.Outcome.LIMIT;
+            }
+            if (tryAstar) {
+                BestFirstSearch.Result r = search.run(q.init(), q.goalPos(), q.goalNeg(), 1, 1, false, STAGE_EVALUATIONS);
+                effort[0] += r.expanded();
+                effort[1] += r.evaluated();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                    return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+                }
+            }
+        } else {
+            // the agenda may use a tenth of the time; the complete search gets the rest
+            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
+            plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), open, effort);
+        }
+        if (plan == null && System.nanoTime() < deadline) {
+            Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
+            BestFirstSearch.Result r = new LazyGreedySearch(h, lms, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
+                return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
+            }
+        }
+        if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
+        plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        List<PddlStep> steps = new ArrayList<>(plan.length);
+        for (int o : plan) steps.add(task.ops[o].toAction());
+        return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
+    }
+
+    /** Goals in order of their relaxed distance from the initial state, achieved cumulatively. */
+    private int[] agenda(GroundedProblem.Query q, BestFirstSearch search, List<Integer> open, long[] effort) {
+        List<Integer> order = new ArrayList<>(open);
+        List<Integer> done = new ArrayList<>();
+        for (int g : q.goalPos()) if (!open.contains(g)) done.add(g);
+        int[] state = q.init();
+        List<Integer> plan = new ArrayList<>();
+        for (int i = 0; i < order.size(); i++) {
+            done.add(order.get(i));
+            boolean last = i == order.size() - 1;
+            int[] goals = Grounder.sortedUnique(done);
+            int[] neg = last ? q.goalNeg() : new int[0];
+            BestFirstSearch.Result r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, true, STAGE_EVALUATIONS);
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND && r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
+                r = search.run(state, goals, neg, 1, STAGE_WEIGHT, false, false, STAGE_EVALUATIONS);
+            }
+            effort[0] += r.expanded();
+            effort[1] += r.evaluated();
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) return null;
+            for (int o : r.plan()) plan.add(o);
+            state = r.finalState();
+        }
+        return plan.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static SolveResult.Stats stats(double groundMs, long searchStart, long[] effort) {
+        return new SolveResult.Stats(groundMs, (System.nanoTime() - searchStart) / 1e6, effort[0], effort[1]);
+    }
+}

@@ -1,0 +1,24 @@
+package org.triad.planner.pddl;
+
+import java.util.List;
+
+/** An action effect: literals, unconditional {@code forall} and {@code increase (total-cost)}. */
+public sealed interface PddlEffect permits PddlEffect.Add, PddlEffect.Delete, PddlEffect.Forall, PddlEffect.Increase {
+
+    record Add(Formula.Atom atom) implements PddlEffect { }
+
+    record Delete(Formula.Atom atom) implements PddlEffect { }
+
+    record Forall(List<TypedName> variables, List<PddlEffect> body) implements PddlEffect {
+        public Forall {
+            variables = List.copyOf(variables);
+            body = List.copyOf(body);
+        }
+    }
+
+    /**
+     * {@code (increase (total-cost) X)}: {@code amount} is a number or a function term such as
+     * {@code (travel-slow ?f1 ?f2)}; kept as a term so it can be evaluated against the problem.
+     */
+    record Increase(String function, NumericTerm amount) implements PddlEffect { }
+}

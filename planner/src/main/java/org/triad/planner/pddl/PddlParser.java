@@ -1,0 +1,394 @@
+package org.triad.planner.pddl;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * Parses PDDL domains and problems (STRIPS, typing incl. {@code either}, negative preconditions,
+ * equality, disjunctive/quantified preconditions, unconditional {@code forall} effects, action costs).
+ * Every syntax error is a {@link PddlParseException} with {@code line:col}.
+ */
+public final class PddlParser {
+    private final String source;
+
+    private PddlParser(String source) {
+        this.source = source;
+    }
+
+    public static Domain parseDomain(String text, String source) {
+        return new PddlParser(source).domain(SExpr.read(text, source));
+    }
+
+    public static Problem parseProblem(String text, String source) {
+        return new PddlParser(source).problem(SExpr.read(text, source));
+    }
+
+    public static Domain parseDomain(Path file) throws IOException {
+        return parseDomain(Files.readString(file), file.toString());
+    }
+
+    public static Problem parseProblem(Path file) throws IOException {
+        return parseProblem(Files.readString(file), file.toString());
+    }
+
+    private PddlParseException err(SExpr at, String msg) {
+        return new PddlParseException(source, at.line, at.column, msg);
+    }
+
+    private List<SExpr> list(SExpr e, String what) {
+        if (!e.isList()) throw err(e, "expected " + what + " in parentheses, found '" + e.symbol + "'");
+        return e.items;
+    }
+
+    private String name(SExpr e, String what) {
+        if (e.isList()) throw err(e, "expected " + what + ", found a parenthesised expression");
+        return e.symbol;
+    }
+
+    private List<SExpr> header(SExpr root, String kind) {
+        List<SExpr> items = list(root, "'(define (" + kind + " NAME) ...)'");
+        if (items.isEmpty() || !items.get(0).isSymbol("define")) throw err(root, "expected '(define (" + kind + " NAME) ...)'");
+        if (items.size() < 2) throw err(root, "missing '(" + kind + " NAME)' after 'define'");
+        List<SExpr> h = list(items.get(1), "'(" + kind + " NAME)'");
+        if (h.size() != 2 || !h.get(0).isSymbol(kind)) {
+            throw err(items.get(1), "expected '(" + kind + " NAME)'" + (h.isEmpty() || h.get(0).isList() ? "" : ", found '(" + h.get(0).symbol + " ...)'"));
+        }
+        return items;
+    }
+
+    private Domain domain(SExpr root) {
+        List<SExpr> items = header(root, "domain");
+        String name = name(items.get(1).items.get(1), "a domain name");
+        List<String> reqs = new ArrayList<>();
+        List<TypedName> types = new ArrayList<>();
+        List<TypedName> constants = new ArrayList<>();
+        List<PredicateDecl> preds = new ArrayList<>();
+        List<PredicateDecl> functions = new ArrayList<>();
+        List<Action> actions = new ArrayList<>();
+        List<SExpr> actionExprs = new ArrayList<>();
+        for (SExpr sec : items.subList(2, items.size())) {
+            String head = sec.head();
+            if (head == null) throw err(sec, "expected a domain section such as '(:predicates ...)'");
+            List<SExpr> rest = sec.items.subList(1, sec.items.size());
+            switch (head) {
+                case ":requirements" -> rest.forEach(r -> reqs.add(name(r, "a requirement")));
+                case ":types" -> types.addAll(typedList(rest, "object", false));
+                case ":constants" -> constants.addAll(typedList(rest, "object", false));
+                case ":predicates" -> {
+                    for (SExpr p : rest) preds.add(predicateDecl(p));
+                }
+                case ":functions" -> {
+                    for (SExpr p : rest) {
+                        if (p.isList()) functions.add(predicateDecl(p));
+                        // "- number" type annotations are accepted and ignored
+                    }
+                }
+                case ":action" -> {
+                    actions.add(action(sec));
+                    actionExprs.add(sec);
+                }
+                case ":derived", ":durative-action" -> throw err(sec, head + " is not supported (STRIPS/ADL subset only)");
+                default -> throw err(sec, "unknown domain section '" + head + "'");
+            }
+        }
+        Set<String> seen = new HashSet<>();
+        for (int i = 0; i < actions.size(); i++) {
+            if (!seen.add(actions.get(i).name())) throw err(actionExprs.get(i), "action '" + actions.get(i).name() + "' is defined twice");
+        }
+        Set<String> declared = new HashSet<>();
+        preds.forEach(p -> declared.add(p.name()));
+        for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
+        return new Domain(name, reqs, types, constants, preds, functions, actions);
+    }
+
+    private void checkPredicates(Action a, Set<String> declared, SExpr root) {
+        List<Formula.Atom> atoms = new ArrayList<>();
+        collectAtoms(a.precondition(), atoms);
+        collectEffectAtoms(a.effects(), atoms);
+        for (Formula.Atom at : atoms) {
+            if (!declared.contains(at.predicate())) {
+                throw err(root, "action '" + a.name() + "' uses undeclared predicate '" + at.predicate() + "'");
+            }
+        }
+    }
+
+    static void collectAtoms(Formula f, List<Formula.Atom> out) {
+        if (f instanceof Formula.Atom a) out.add(a);
+        else if (f instanceof Formula.Not n) collectAtoms(n.body(), out);
+        else if (f instanceof Formula.And a) a.parts().forEach(p -> collectAtoms(p, out));
+        else if (f instanceof Formula.Or o) o.parts().forEach(p -> collectAtoms(p, out));
+        else if (f instanceof Formula.Imply i) {
+            collectAtoms(i.condition(), out);
+            collectAtoms(i.consequence(), out);
+        } else if (f instanceof Formula.Forall q) collectAtoms(q.body(), out);
+        else if (f instanceof Formula.Exists q) collectAtoms(q.body(), out);
+    }
+
+    static void collectEffectAtoms(List<PddlEffect> effects, List<Formula.Atom> out) {
+        for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.Add a) out.add(a.atom());
+            else if (e instanceof PddlEffect.Delete d) out.add(d.atom());
+            else if (e instanceof PddlEffect.Forall q) collectEffectAtoms(q.body(), out);
+        }
+    }
+
+    private PredicateDecl predicateDecl(SExpr p) {
+        List<SExpr> it = list(p, "a predicate declaration");
+        if (it.isEmpty()) throw err(p, "empty predicate declaration");
+        return new PredicateDecl(name(it.get(0), "a predicate name"), typedList(it.subList(1, it.size()), "object", true));
+    }
+
+    /** Parses {@code a b - t c - (either u v) d}; untyped names get {@code defaultType}. */
+    private List<TypedName> typedList(List<SExpr> items, String defaultType, boolean variables) {
+        List<TypedName> out = new ArrayList<>();
+        List<SExpr> pending = new ArrayList<>();
+        for (int i = 0; i < items.size(); i++) {
+            SExpr e = items.get(i);
+            if (e.isSymbol("-")) {
+                if (pending.isEmpty()) throw err(e, "'-' without names before it");
+                if (i + 1 >= items.size()) throw err(e, "missing type after '-'");
+                List<String> types = typeSpec(items.get(++i));
+                for (SExpr n : pending) out.add(new TypedName(n.symbol, types));
+                pending.clear();
+            } else {
+                String n = name(e, variables ? "a variable" : "a name");
+                if (variables && !n.startsWith("?")) throw err(e, "expected a variable starting with '?', found '" + n + "'");
+                if (!variables && n.startsWith("?")) throw err(e, "expected a name, found variable '" + n + "'");
+                pending.add(e);
+            }
+        }
+        for (SExpr n : pending) out.add(TypedName.of(n.symbol, defaultType));
+        return out;
+    }
+
+    private List<String> typeSpec(SExpr t) {
+        if (!t.isList()) return List.of(t.symbol);
+        if (!"either".equals(t.head()) || t.items.size() < 2) throw err(t, "expected a type name or '(either T1 T2 ...)'");
+        List<String> types = new ArrayList<>();
+        for (SExpr x : t.items.subList(1, t.items.size())) types.add(name(x, "a type name"));
+        return types;
+    }
+
+    private Action action(SExpr sec) {
+        List<SExpr> it = sec.items;
+        if (it.size() < 2) throw err(sec, "missing action name after ':action'");
+        String name = name(it.get(1), "an action name");
+        List<TypedName> params = List.of();
+        Formula pre = new Formula.And(List.of());
+        List<PddlEffect> effects = List.of();
+        for (int i = 2; i < it.size(); i += 2) {
+            SExpr key = it.get(i);
+            String k = name(key, "':parameters', ':precondition' or ':effect'");
+            if (i + 1 >= it.size()) throw err(key, "missing value after '" + k + "'");
+            SExpr v = it.get(i + 1);
+            switch (k) {
+                case ":parameters" -> params = typedList(list(v, "a parameter list"), "object", true);
+                case ":precondition" -> pre = v.isList() && v.items.isEmpty() ? new Formula.And(List.of()) : formula(v);
+                case ":effect" -> effects = v.isList() && v.items.isEmpty() ? List.of() : effect(v);
+                default -> throw err(key, "unknown action key '" + k + "' in action '" + name + "'");
+            }
+        }
+        Set<String> vars = new HashSet<>();
+        for (TypedName p : params) {
+            if (!vars.add(p.name())) throw err(sec, "parameter '" + p.name() + "' is declared twice in action '" + name + "'");
+        }
+        checkVariables(pre, vars, sec, name);
+        List<Formula.Atom> atoms = new ArrayList<>();
+        collectEffectAtomsBound(effects, vars, sec, name);
+        collectAtoms(pre, atoms);
+        return new Action(name, params, pre, effects);
+    }
+
+    private void checkVariables(Formula f, Set<String> bound, SExpr at, String action) {
+        if (f instanceof Formula.Atom a) a.args().forEach(x -> checkVar(x, bound, at, action));
+        else if (f instanceof Formula.Equals e) {
+            checkVar(e.left(), bound, at, action);
+            checkVar(e.right(), bound, at, action);
+        } else if (f instanceof Formula.Not n) checkVariables(n.body(), bound, at, action);
+        else if (f instanceof Formula.And a) a.parts().forEach(p -> checkVariables(p, bound, at, action));
+        else if (f instanceof Formula.Or o) o.parts().forEach(p -> checkVariables(p, bound, at, action));
+        else if (f instanceof Formula.Imply i) {
+            checkVariables(i.condition(), bound, at, action);
+            checkVariables(i.consequence(), bound, at, action);
+        } else if (f instanceof Formula.Forall q) checkVariables(q.body(), extend(bound, q.variables()), at, action);
+        else if (f instanceof Formula.Exists q) checkVariables(q.body(), extend(bound, q.variables()), at, action);
+    }
+
+    private void collectEffectAtomsBound(List<PddlEffect> effects, Set<String> bound, SExpr at, String action) {
+        for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.Add a) a.atom().args().forEach(x -> checkVar(x, bound, at, action));
+            else if (e instanceof PddlEffect.Delete d) d.atom().args().forEach(x -> checkVar(x, bound, at, action));
+            else if (e instanceof PddlEffect.Forall q) collectEffectAtomsBound(q.body(), extend(bound, q.variables()), at, action);
+        }
+    }
+
+    private static Set<String> extend(Set<String> bound, List<TypedName> vars) {
+        Set<String> s = new HashSet<>(bound);
+        vars.forEach(v -> s.add(v.name()));
+        return s;
+    }
+
+    private void checkVar(String term, Set<String> bound, SExpr at, String action) {
+        if (term.startsWith("?") && !bound.contains(term)) {
+            throw err(at, "variable '" + term + "' is not a parameter of action '" + action + "'");
+        }
+    }
+
+    private Formula formula(SExpr e) {
+        List<SExpr> it = list(e, "a formula");
+        if (it.isEmpty()) throw err(e, "empty formula '()'");
+        String head = name(it.get(0), "a predicate or connective");
+        List<SExpr> args = it.subList(1, it.size());
+        switch (head) {
+            case "and": {
+                List<Formula> parts = new ArrayList<>();
+                for (SExpr a : args) parts.add(formula(a));
+                return new Formula.And(parts);
+            }
+            case "or": {
+                List<Formula> parts = new ArrayList<>();
+                for (SExpr a : args) parts.add(formula(a));
+                return new Formula.Or(parts);
+            }
+            case "not":
+                if (args.size() != 1) throw err(e, "'not' takes exactly one formula");
+                return new Formula.Not(formula(args.get(0)));
+            case "imply":
+                if (args.size() != 2) throw err(e, "'imply' takes exactly two formulas");
+                return new Formula.Imply(formula(args.get(0)), formula(args.get(1)));
+            case "=":
+                if (args.size() != 2) throw err(e, "'=' takes exactly two terms");
+                return new Formula.Equals(name(args.get(0), "a term"), name(args.get(1), "a term"));
+            case "forall":
+            case "exists": {
+                if (args.size() != 2) throw err(e, "'" + head + "' takes a variable list and a formula");
+                List<TypedName> vars = typedList(list(args.get(0), "a variable list"), "object", true);
+                Formula body = formula(args.get(1));
+                return head.equals("forall") ? new Formula.Forall(vars, body) : new Formula.Exists(vars, body);
+            }
+            case "when":
+                throw err(e, "'when' is an effect, not a formula");
+            default:
+                if (head.startsWith(":") || head.startsWith("?")) throw err(it.get(0), "expected a predicate name, found '" + head + "'");
+                List<String> terms = new ArrayList<>();
+                for (SExpr a : args) terms.add(name(a, "a term (object or variable)"));
+                return new Formula.Atom(head, terms);
+        }
+    }
+
+    private List<PddlEffect> effect(SExpr e) {
+        List<SExpr> it = list(e, "an effect");
+        if (it.isEmpty()) throw err(e, "empty effect '()'");
+        String head = name(it.get(0), "an effect");
+        List<SExpr> args = it.subList(1, it.size());
+        switch (head) {
+            case "and": {
+                List<PddlEffect> out = new ArrayList<>();
+                for (SExpr a : args) out.addAll(effect(a));
+                return out;
+            }
+            case "not": {
+                if (args.size() != 1) throw err(e, "'not' takes exactly one atom");
+                Formula f = formula(args.get(0));
+                if (!(f instanceof Formula.Atom a)) throw err(args.get(0), "only an atom can be deleted in an effect");
+                return List.of(new PddlEffect.Delete(a));
+            }
+            case "forall": {
+                if (args.size() != 2) throw err(e, "'forall' takes a variable list and an effect");
+                List<TypedName> vars = typedList(list(args.get(0), "a variable list"), "object", true);
+                return List.of(new PddlEffect.Forall(vars, effect(args.get(1))));
+            }
+            case "when":
+                throw err(e, "conditional effects ('when') are not supported");
+            case "increase": {
+                if (args.size() != 2) throw err(e, "'increase' takes a function and an amount");
+                List<SExpr> f = list(args.get(0), "a function term such as (total-cost)");
+                if (f.size() != 1) throw err(args.get(0), "only '(increase (total-cost) X)' is supported");
+                return List.of(new PddlEffect.Increase(name(f.get(0), "a function name"), numeric(args.get(1))));
+            }
+            case "decrease", "assign", "scale-up", "scale-down":
+                throw err(e, "numeric effect '" + head + "' is not supported (only increase of total-cost)");
+            default: {
+                Formula f = formula(e);
+                if (!(f instanceof Formula.Atom a)) throw err(e, "expected an atom in an effect");
+                return List.of(new PddlEffect.Add(a));
+            }
+        }
+    }
+
+    private NumericTerm numeric(SExpr e) {
+        if (!e.isList()) {
+            try {
+                return new NumericTerm.Constant(Double.parseDouble(e.symbol));
+            } catch (NumberFormatException ex) {
+                throw err(e, "expected a number or a function term, found '" + e.symbol + "'");
+            }
+        }
+        if (e.items.isEmpty()) throw err(e, "empty function term");
+        List<String> args = new ArrayList<>();
+        for (SExpr a : e.items.subList(1, e.items.size())) args.add(name(a, "a term"));
+        return new NumericTerm.Function(name(e.items.get(0), "a function name"), args);
+    }
+
+    private Problem problem(SExpr root) {
+        List<SExpr> items = header(root, "problem");
+        String name = name(items.get(1).items.get(1), "a problem name");
+        String domainName = null;
+        List<TypedName> objects = new ArrayList<>();
+        List<Formula.Atom> init = new ArrayList<>();
+        List<Problem.NumericFact> numeric = new ArrayList<>();
+        Formula goal = null;
+        String metric = null;
+        for (SExpr sec : items.subList(2, items.size())) {
+            String head = sec.head();
+            if (head == null) throw err(sec, "expected a problem section such as '(:init ...)'");
+            List<SExpr> rest = sec.items.subList(1, sec.items.size());
+            switch (head) {
+                case ":domain" -> {
+                    if (rest.size() != 1) throw err(sec, "expected '(:domain NAME)'");
+                    domainName = name(rest.get(0), "a domain name");
+                }
+                case ":requirements" -> { }
+                case ":objects" -> objects.addAll(typedList(rest, "object", false));
+                case ":init" -> {
+                    for (SExpr f : rest) {
+                        if ("=".equals(f.head())) {
+                            if (f.items.size() != 3) throw err(f, "expected '(= (FUNCTION ARGS) NUMBER)'");
+                            NumericTerm t = numeric(f.items.get(1));
+                            NumericTerm v = numeric(f.items.get(2));
+                            if (!(t instanceof NumericTerm.Function fn) || !(v instanceof NumericTerm.Constant c)) {
+                                throw err(f, "expected '(= (FUNCTION ARGS) NUMBER)'");
+                            }
+                            numeric.add(new Problem.NumericFact(fn.name(), fn.args(), c.value()));
+                            continue;
+                        }
+                        Formula a = formula(f);
+                        if (!(a instanceof Formula.Atom atom)) throw err(f, "the initial state lists ground atoms only");
+                        for (String t : atom.args()) {
+                            if (t.startsWith("?")) throw err(f, "variable '" + t + "' in the initial state");
+                        }
+                        init.add(atom);
+                    }
+                }
+                case ":goal" -> {
+                    if (rest.size() != 1) throw err(sec, "expected '(:goal FORMULA)'");
+                    goal = formula(rest.get(0));
+                }
+                case ":metric" -> {
+                    StringBuilder sb = new StringBuilder();
+                    for (SExpr r : rest) sb.append(sb.length() > 0 ? " " : "").append(r);
+                    metric = sb.toString();
+                }
+                default -> throw err(sec, "unknown problem section '" + head + "'");
+            }
+        }
+        if (domainName == null) throw err(root, "missing '(:domain NAME)'");
+        if (goal == null) throw err(root, "missing '(:goal ...)'");
+        return new Problem(name, domainName, objects, init, numeric, goal, metric);
+    }
+}

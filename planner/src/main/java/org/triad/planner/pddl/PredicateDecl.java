@@ -1,0 +1,7 @@
+package org.triad.planner.pddl;
+
+import java.util.List;
+
+public record PredicateDecl(String name, List<TypedName> parameters) {
+    public PredicateDecl { parameters = List.copyOf(parameters); }
+}

@@ -1,7 +1,0 @@
-package org.triad.runtime.pddl;
-
-import java.util.List;
-
-public record PredicateDecl(String name, List<TypedName> parameters) {
-    public PredicateDecl { parameters = List.copyOf(parameters); }
-}

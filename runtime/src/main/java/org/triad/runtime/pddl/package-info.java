@@ -1,7 +1,0 @@
-/**
- * PDDL as data: an AST for domains and problems ({@link org.triad.runtime.pddl.Domain},
- * {@link org.triad.runtime.pddl.Problem}), a parser that reports bad input as
- * {@link org.triad.runtime.pddl.PddlParseException} with {@code line:col}, and a writer that prints
- * standard PDDL for any planner. No third-party dependencies.
- */
-package org.triad.runtime.pddl;
