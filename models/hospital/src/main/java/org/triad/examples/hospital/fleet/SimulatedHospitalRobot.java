@@ -52,7 +52,7 @@ final class SimulatedHospitalRobot implements FleetRobot {
         this.stateSource = new HospitalStateProvider(hospital.courier(), hospital.building());
         this.actionRunner = new HospitalActionExecutor(hospital.courier(), hospital.building());
         Simulation sim = hospital.sim();
-        map = snapshot(sim);
+        map = snapshot(sim, name);
         markWallNanos = System.nanoTime();
         markSim = sim.time();
         sim.addStepListener(this::afterStep);
@@ -86,7 +86,7 @@ final class SimulatedHospitalRobot implements FleetRobot {
     private void afterStep() {
         Simulation sim = hospital.sim();
         if (sim.steps() % MAP_EVERY_STEPS == 0) {
-            map = snapshot(sim);
+            map = snapshot(sim, name);
         }
         if (Double.isInfinite(speed)) {
             return;
@@ -105,7 +105,8 @@ final class SimulatedHospitalRobot implements FleetRobot {
         }
     }
 
-    private static FloorMap snapshot(Simulation sim) {
+    /** The floor now; the courier is labelled with its name in the fleet. */
+    private static FloorMap snapshot(Simulation sim, String fleetName) {
         FloorPlan plan = sim.plan();
         List<FloorMap.Area> areas = new ArrayList<>();
         for (Room r : plan.rooms()) {
@@ -128,7 +129,7 @@ final class SimulatedHospitalRobot implements FleetRobot {
         }
         List<FloorMap.Mark> robots = new ArrayList<>();
         for (Robot r : sim.robots()) {
-            robots.add(new FloorMap.Mark(r.name(), r.position().x(), r.position().y(),
+            robots.add(new FloorMap.Mark(r.name().equals(HospitalSimulation.ROBOT) ? fleetName : r.name(), r.position().x(), r.position().y(),
                     r.carried().stream().map(Item::name).collect(Collectors.joining(", "))));
         }
         List<FloorMap.Mark> items = new ArrayList<>();
