@@ -3,12 +3,12 @@ package org.triad.service;
 import java.time.Clock;
 import java.time.Instant;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
@@ -56,8 +56,9 @@ public final class FleetService implements AutoCloseable {
     private final Object lock = new Object();
     /** Queued task ids in queue order (= submission order; a retried task keeps its place in front). */
     private final TreeSet<Long> queue = new TreeSet<>();
-    private final Map<Long, String> preferred = new HashMap<>();
-    private final Map<Long, TaskCall> calls = new HashMap<>();
+    private final Map<Long, String> preferred = new ConcurrentHashMap<>();
+    /** The checked submissions of tasks not yet finished, read by request threads for their descriptions. */
+    private final Map<Long, TaskCall> calls = new ConcurrentHashMap<>();
     private final Thread dispatcher;
     private volatile boolean running = true;
     private volatile long dispatchNanos;

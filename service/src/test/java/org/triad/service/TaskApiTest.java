@@ -29,7 +29,7 @@ class TaskApiTest {
 
     @BeforeAll
     static void start() {
-        s = ServiceFixture.start(dir.resolve("db"), "dry:2");
+        s = ServiceFixture.start(dir.resolve("db"), "dry:2,state=Morning,delay=40");
     }
 
     @AfterAll
@@ -60,7 +60,22 @@ class TaskApiTest {
     }
 
     @Test
-    void tasksWithoutParametersAndWithEveryParameterKindAreAccepted() {
+    void tasksForDifferentRobotsRunInParallel() {
+        long a = s.submit("Patrol", "{\"a\": \"ward2\", \"b\": \"storage\", \"c\": \"ward1\"}");
+        long b = s.submit("Patrol", "{\"a\": \"ward1\", \"b\": \"ward3\", \"c\": \"xray\"}");
+        long deadline = System.nanoTime() + 30_000_000_000L;
+        boolean together = false;
+        while (!together && System.nanoTime() < deadline) {
+            JsonNode robots = s.get("/api/robots", ServiceFixture.SUBMIT).body();
+            together = robots.get(0).hasNonNull("task") && robots.get(1).hasNonNull("task");
+            ServiceFixture.sleep(10);
+        }
+        assertTrue(together, "both robots had a task at the same time");
+        assertTrue(!s.awaitState(a, "completed").get("robot").asText().equals(s.awaitState(b, "completed").get("robot").asText()));
+    }
+
+    @Test
+    void aTaskOnAPersonCompletes() {
         long id = s.submit("Guide", "{\"p\": \"bob\", \"to\": \"lobby\"}");
         assertEquals("completed", s.awaitState(id, "completed").get("state").asText());
     }
