@@ -57,6 +57,31 @@ final class ApplicationLauncher {
 		return main.trim();
 	}
 
+	/**
+	 * The application's classes (its {@code target/classes} and the class path its build wrote), for
+	 * plug-ins found with {@link java.util.ServiceLoader} in this JVM, e.g. its simulated robots for
+	 * {@code triad serve}; empty when the project is not built. Triad's own classes come from the parent.
+	 */
+	java.util.Optional<ClassLoader> classLoader(ClassLoader parent) {
+		Path classes = project.resolve("target/classes");
+		Path classpathFile = project.resolve("target/classpath.txt");
+		if (!Files.isDirectory(classes) || !Files.isRegularFile(classpathFile)) {
+			return java.util.Optional.empty();
+		}
+		List<java.net.URL> urls = new ArrayList<>();
+		try {
+			urls.add(classes.toUri().toURL());
+			for (String entry : Files.readString(classpathFile).trim().split(java.io.File.pathSeparator)) {
+				if (!entry.isBlank()) {
+					urls.add(Path.of(entry).toUri().toURL());
+				}
+			}
+		} catch (IOException e) {
+			throw new UncheckedIOException("cannot read " + classpathFile + ": " + e.getMessage(), e);
+		}
+		return java.util.Optional.of(new java.net.URLClassLoader(urls.toArray(java.net.URL[]::new), parent));
+	}
+
 	/** Runs the application's {@code command} with {@code args}; returns its exit code. */
 	int run(String command, List<String> args, PrintWriter out, PrintWriter err) {
 		String main = mainClass(command);

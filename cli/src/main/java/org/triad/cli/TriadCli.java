@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
 /** The {@code triad} command: the entry point of the toolchain for every role. */
 @Command(name = "triad", mixinStandardHelpOptions = true, version = "Triad 0.1.0",
 		description = "Model-driven service robotics: check, generate and run applications modeled by domain, robotics and integration experts.",
-		subcommands = { DemoCommand.class, CheckCommand.class, GenerateCommand.class, RunCommand.class, PddlCommand.class, SolveCommand.class, ArcCommand.class, LspCommand.class,
+		subcommands = { DemoCommand.class, CheckCommand.class, GenerateCommand.class, RunCommand.class, ServeCommand.class, PddlCommand.class, SolveCommand.class, ArcCommand.class, LspCommand.class,
 				RobotCommand.class, BrokerCommand.class,
 				CommandLine.HelpCommand.class })
 public final class TriadCli implements Runnable {

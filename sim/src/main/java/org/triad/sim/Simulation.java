@@ -43,6 +43,7 @@ public final class Simulation {
     private long eventSeq;
     private int blockings;
     private boolean stepping;
+    private final List<Runnable> stepListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     private record Scheduled(double time, long seq, String label, Runnable action) implements Comparable<Scheduled> {
         @Override
@@ -450,6 +451,18 @@ public final class Simulation {
         } finally {
             stepping = false;
         }
+        for (Runnable l : stepListeners) {
+            l.run();
+        }
+    }
+
+    /**
+     * Runs {@code listener} after every step, on the thread that steps: the place to read a consistent
+     * picture of the world (this class is not thread-safe) or to pace virtual time against the wall clock.
+     * The listener may read the simulation but must not step it.
+     */
+    public void addStepListener(Runnable listener) {
+        stepListeners.add(Checks.notNull("listener", listener));
     }
 
     /** Advances virtual time by {@code seconds} (rounded up to whole steps). */

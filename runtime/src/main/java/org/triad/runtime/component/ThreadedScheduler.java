@@ -3,6 +3,7 @@ package org.triad.runtime.component;
 import java.time.Duration;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -77,7 +78,12 @@ public final class ThreadedScheduler extends Scheduler {
 
     private void schedule(AtomicComponent c) {
         if (c.scheduled.compareAndSet(false, true)) {
-            components.execute(() -> drain(c));
+            try {
+                components.execute(() -> drain(c));
+            } catch (RejectedExecutionException closed) {
+                // after close(), e.g. the result of an interrupted activity: nobody is left to handle it
+                end();
+            }
         }
     }
 
@@ -102,13 +108,18 @@ public final class ThreadedScheduler extends Scheduler {
     @Override
     void startActivity(Activity<?> activity) {
         begin();
-        workers.execute(() -> {
-            try {
-                activity.runOn(this);
-            } finally {
-                end();
-            }
-        });
+        try {
+            workers.execute(() -> {
+                try {
+                    activity.runOn(this);
+                } finally {
+                    end();
+                }
+            });
+        } catch (RejectedExecutionException closed) {
+            // after close(): the activity is not started
+            end();
+        }
     }
 
     /** Stops the threads; running activities are interrupted. */

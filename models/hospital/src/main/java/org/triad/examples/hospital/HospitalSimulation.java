@@ -48,7 +48,15 @@ public final class HospitalSimulation {
 
     /** A hospital simulation with the given random seed (same seed, same run). */
     public HospitalSimulation(long seed) {
-        sim = Simulation.builder(floor.plan()).seed(seed).build();
+        this(seed, true);
+    }
+
+    /**
+     * @param recordTrace whether to record every frame for the pictures; a long-running service turns
+     *                    it off, since the trace grows with every step
+     */
+    public HospitalSimulation(long seed, boolean recordTrace) {
+        sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
         Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, RobotSpec.defaults());
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));

@@ -1,0 +1,30 @@
+package org.triad.refarc.fleet;
+
+import java.util.Optional;
+
+import org.triad.refarc.ActionRunner;
+import org.triad.refarc.StateSource;
+
+/**
+ * One robot of a fleet: what its own RefArc needs (state and actions) and, if the platform can tell,
+ * a picture of where it is for the operator. Implementations are used by one RefArc at a time, but
+ * {@link #floor()} is called from other threads.
+ */
+public interface FleetRobot extends AutoCloseable {
+    /** Unique within the fleet; shown to people and used in URLs (letters, digits, '-', '_'). */
+    String name();
+
+    StateSource stateSource();
+
+    ActionRunner actionRunner();
+
+    /** The latest floor map around this robot (robots, items, people, doors), if the platform has one. */
+    default Optional<FloorMap> floor() {
+        return Optional.empty();
+    }
+
+    /** Releases the connection or simulation; the default does nothing. */
+    @Override
+    default void close() {
+    }
+}

@@ -1,0 +1,34 @@
+package org.triad.service;
+
+import java.time.Instant;
+import java.util.List;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+/** What the API returns, as JSON (Jackson serialises these records field by field). */
+public final class Views {
+    private Views() {
+    }
+
+    public record TaskView(long id, String task, JsonNode args, String call, String state, String robot, String preferredRobot,
+            String reason, String submittedAt, String updatedAt, List<EventView> events) {
+    }
+
+    public record EventView(long id, String at, String kind, String robot, String text) {
+    }
+
+    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map) {
+    }
+
+    public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,
+            String resolution) {
+    }
+
+    /** One message of the live stream: {@code type} task, robot or request, and its view. */
+    public record LiveEvent(String type, Object data) {
+    }
+
+    static String time(Instant t) {
+        return t == null ? null : t.toString();
+    }
+}

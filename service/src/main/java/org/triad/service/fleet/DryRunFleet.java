@@ -1,0 +1,89 @@
+package org.triad.service.fleet;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.triad.refarc.fleet.FleetContext;
+import org.triad.refarc.fleet.FleetRobot;
+import org.triad.refarc.fleet.RobotPlatformProvider;
+import org.triad.runtime.app.State;
+
+/**
+ * Scheme {@code dry}, for every application: robots whose actions do exactly what their
+ * postconditions say, over a situation of the models, like {@code ./triad run}. Argument
+ * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]}: N robots on situation S (default: the
+ * service's), each action taking MS milliseconds, the first K calls of ACTION failing on every robot,
+ * or every robot vanishing (its state can no longer be read) after K actions.
+ */
+public final class DryRunFleet implements RobotPlatformProvider {
+    public static final int MAX_ROBOTS = 1000;
+    /** Robots are numbered across all {@code dry:} specs of one service, so that their names stay unique. */
+    private int numbered;
+
+    @Override
+    public String application() {
+        return ANY_APPLICATION;
+    }
+
+    @Override
+    public String scheme() {
+        return "dry";
+    }
+
+    @Override
+    public String usage() {
+        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]  N robots that do what the postconditions say, over a situation";
+    }
+
+    @Override
+    public List<FleetRobot> connect(String argument, FleetContext context) {
+        String[] parts = argument.split(",");
+        int n = number("dry:N", parts[0], 1, MAX_ROBOTS);
+        String situation = null;
+        long delayMillis = 0;
+        String failAction = null;
+        int failCalls = 0;
+        int goneAfter = -1;
+        for (int i = 1; i < parts.length; i++) {
+            String[] kv = parts[i].split("=", 2);
+            if (kv.length != 2) {
+                throw new IllegalArgumentException("dry: expected KEY=VALUE, not '" + parts[i] + "'; " + usage());
+            }
+            String value = kv[1].trim();
+            switch (kv[0].trim()) {
+                case "state" -> situation = value;
+                case "delay" -> delayMillis = number("dry:...,delay=MS", value, 0, 600_000);
+                case "gone" -> goneAfter = number("dry:...,gone=K", value, 0, Integer.MAX_VALUE);
+                case "fail" -> {
+                    String[] ak = value.split("\\*", 2);
+                    failAction = ak[0].trim();
+                    failCalls = ak.length == 2 ? number("dry:...,fail=ACTION*K", ak[1], 1, Integer.MAX_VALUE) : 1;
+                    String action = failAction;
+                    if (context.schema().actions().stream().noneMatch(a -> a.name().equals(action))) {
+                        throw new IllegalArgumentException("dry:...,fail=" + value + ": the application has no action '" + action + "'");
+                    }
+                }
+                default -> throw new IllegalArgumentException("dry: unknown option '" + kv[0] + "'; " + usage());
+            }
+        }
+        State initial = context.situation(situation);
+        List<FleetRobot> robots = new ArrayList<>();
+        for (int i = 1; i <= n; i++) {
+            robots.add(new DryRunRobot("dry-" + ++numbered, context.schema(), initial, delayMillis, failAction, failCalls, goneAfter));
+        }
+        return robots;
+    }
+
+    private static int number(String what, String text, int min, int max) {
+        int v;
+        try {
+            v = Integer.parseInt(text.trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(what + " takes a whole number, not '" + text + "'");
+        }
+        if (v < min || v > max) {
+            throw new IllegalArgumentException(what + " takes " + min + " to " + max + ", not " + v);
+        }
+        return v;
+    }
+}

@@ -1,0 +1,20 @@
+package org.triad.service.store;
+
+import java.time.Instant;
+
+/** The rows of the service's database. */
+public final class Records {
+    private Records() {
+    }
+
+    public record TaskRow(long id, String task, String args, TaskState state, String robot, String preferredRobot, String reason,
+            Instant submittedAt, Instant updatedAt) {
+    }
+
+    public record EventRow(long id, long taskId, Instant at, String kind, String robot, String text) {
+    }
+
+    public record RequestRow(long id, long taskId, String robot, String goal, String reason, Instant raisedAt, Instant resolvedAt,
+            String resolution) {
+    }
+}

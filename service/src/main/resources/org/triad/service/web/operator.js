@@ -1,0 +1,91 @@
+// The operator page: remote-operation requests with their cause and the decisions on them, and every
+// robot with its task, plan and live floor map.
+"use strict";
+(() => {
+  const { api, live, el, tokenForm, time } = Triad;
+  const robotsBox = document.getElementById("robots");
+  const cards = new Map();
+  let robotNames = [];
+  const msg = document.getElementById("operator-message");
+
+  async function load() {
+    try {
+      const robots = await api("GET", "/api/robots");
+      robotNames = robots.map(r => r.name);
+      robots.forEach(showRobot);
+      showRequests(await api("GET", "/api/requests"));
+      const source = live({
+        robot: showRobot,
+        requests: showRequests,
+        hello: d => d.robots.forEach(showRobot),
+      });
+      source.onopen = () => document.getElementById("connection").textContent = "live";
+      source.onerror = () => document.getElementById("connection").textContent = "reconnecting...";
+      setInterval(refreshMaps, 300);
+    } catch (e) {
+      if (e.status === 401) {
+        const box = document.getElementById("access");
+        box.hidden = false;
+        box.replaceChildren(el("p", { class: "error" }, "This page needs the operator token."));
+        tokenForm(box, () => location.reload());
+      } else {
+        msg.textContent = e.message;
+      }
+    }
+  }
+
+  function showRequests(requests) {
+    const list = document.getElementById("requests");
+    document.getElementById("no-requests").hidden = requests.length > 0;
+    list.replaceChildren(...requests.map(r => {
+      const target = el("select", { class: "reassign-robot" }, el("option", { value: "" }, "any robot"), robotNames.map(n => el("option", { value: n }, n)));
+      return el("li", { class: "request", "data-task-id": r.task },
+        el("div", {}, el("strong", {}, "#" + r.task + " " + r.call), " on ", r.robot || "no robot", " at ", time(r.raisedAt)),
+        el("div", { class: "cause" }, (r.goal ? "goal " + r.goal + ": " : "") + r.reason),
+        el("div", {},
+          el("button", { class: "retry", onclick: () => act("retry", r.task) }, "Retry"),
+          target, el("button", { class: "reassign", onclick: () => act("reassign", r.task, { robot: target.value || null }) }, "Re-assign"),
+          el("button", { class: "cancel", onclick: () => api("DELETE", "/api/tasks/" + r.task).catch(e => msg.textContent = e.message) }, "Cancel"),
+          el("button", { class: "done", onclick: () => act("done", r.task) }, "Mark done")));
+    }));
+  }
+
+  function act(action, task, body) {
+    msg.textContent = "";
+    api("POST", "/api/tasks/" + task + "/" + action, body).catch(e => msg.textContent = e.message);
+  }
+
+  function showRobot(r) {
+    let card = cards.get(r.name);
+    if (!card) {
+      card = {
+        root: el("div", { class: "robot", "data-robot": r.name }),
+        canvas: r.map ? el("canvas", { class: "floor" }) : null,
+        info: el("div", {}),
+        busy: false,
+      };
+      card.root.append(el("h2", {}, r.name), card.info);
+      if (card.canvas) card.root.append(card.canvas);
+      robotsBox.append(card.root);
+      cards.set(r.name, card);
+    }
+    const plan = el("ol", { class: "plan" }, r.plan.map((a, i) => el("li", { class: i + 1 === r.step ? "current" : "" }, a)));
+    card.info.replaceChildren(
+      el("div", {}, el("span", { class: "robot-state" }, r.online ? (r.task ? "busy" : "idle") : "offline"),
+        r.task ? [" with ", el("span", { class: "robot-task" }, "#" + r.task + " " + r.call)] : "",
+        " ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
+          r.online ? "Take offline" : "Put online")),
+      r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
+  }
+
+  async function refreshMaps() {
+    if (document.hidden) return;
+    for (const [name, card] of cards) {
+      if (!card.canvas || card.busy) continue;
+      card.busy = true;
+      api("GET", "/api/robots/" + name + "/floor").then(m => FloorMap.draw(card.canvas, m)).catch(() => {}).finally(() => card.busy = false);
+    }
+  }
+
+  load();
+})();
