@@ -12,11 +12,11 @@ import java.util.Locale;
 import java.util.function.IntFunction;
 import java.util.stream.Stream;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /**
- * How the time of {@code ./triad check} (its entry, {@link ApplicationLoader#load}) grows with deep
+ * How the time of {@code ./triad check} (its entry, {@link ApplicationAssembler#load}) grows with deep
  * and large models: conjunctions of n terms (up to the depth limit and past it), n nested
  * parentheses, and files of n kilobytes of goals, each next to the small application of the rule
  * tests. One JVM; per size one warm-up and 5 timed loads (CPU time of the loading thread); prints
@@ -59,11 +59,11 @@ public final class DeepModelsBenchmark {
 			}
 		}
 		Files.writeString(dir.resolve("At.goal"), atGoal.apply(n));
-		LoadedApplication app = ApplicationLoader.load(dir); // warm-up
+		LoadedApplication app = ApplicationAssembler.load(dir); // warm-up
 		List<Long> nanos = new ArrayList<>();
 		for (int i = 0; i < RUNS; i++) {
 			long start = CPU.getCurrentThreadCpuTime();
-			app = ApplicationLoader.load(dir);
+			app = ApplicationAssembler.load(dir);
 			nanos.add(CPU.getCurrentThreadCpuTime() - start);
 		}
 		Collections.sort(nanos);

@@ -11,7 +11,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.parser.ExpressionLimits;
@@ -81,7 +81,7 @@ class DeepModelsTest {
 		}
 		Files.writeString(dir.resolve("Many.goal"), goals);
 		copyBase();
-		LoadedApplication app = ApplicationLoader.load(dir);
+		LoadedApplication app = ApplicationAssembler.load(dir);
 		assertEquals(List.of(), app.diagnostics());
 		assertTrue(app.application().getGoals().size() > 15_000, "goals read: " + app.application().getGoals().size());
 	}
@@ -94,7 +94,7 @@ class DeepModelsTest {
 	private LoadedApplication load(String atGoal) throws IOException {
 		copyBase();
 		Files.writeString(dir.resolve("At.goal"), atGoal);
-		return ApplicationLoader.load(dir);
+		return ApplicationAssembler.load(dir);
 	}
 
 	private void copyBase() throws IOException {

@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 
-import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.triad.planner.PddlPlanners;
 import org.triad.planner.SolveResult;
@@ -26,8 +25,6 @@ class DeepPddlTest {
 	private static final Path BLOCKS = Path.of("..", "planner", "src", "test", "resources", "pddl", "ipc", "blocks");
 
 	@Test
-	@Disabled("the PDDL reader recurses per level (StackOverflowError in SExpr$Reader.expr at this depth); issue #11 "
-			+ "(branch planner) makes it read any depth: enable this test when that lands")
 	void twentyThousandNestedAndsEndInAPlanOrALocatedError() throws IOException {
 		Domain domain = PddlParser.parseDomain(Files.readString(BLOCKS.resolve("domain.pddl")), "domain.pddl");
 		String problem = Files.readString(BLOCKS.resolve("probBLOCKS-4-0.pddl"));

@@ -12,7 +12,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.validation.ActorIssueCodes;
@@ -24,7 +24,7 @@ import org.triad.dsl.validation.StateIssueCodes;
 import org.triad.dsl.validation.TaskIssueCodes;
 
 /**
- * The promise of {@code ./triad check} (its entry, {@link ApplicationLoader#load}), checked for one
+ * The promise of {@code ./triad check} (its entry, {@link ApplicationAssembler#load}), checked for one
  * model file with arbitrary content in an otherwise valid application (the paper's logistics
  * example): the check returns within a bound, and every finding has a registered code and a place
  * inside the files; an internal failure that the loader turned into a finding ("cannot read the
@@ -56,7 +56,7 @@ final class ModelCheckBoundary {
 		Files.write(file, content);
 		try {
 			long start = System.nanoTime();
-			LoadedApplication loaded = ApplicationLoader.load(dir);
+			LoadedApplication loaded = ApplicationAssembler.load(dir);
 			long ms = (System.nanoTime() - start) / 1_000_000;
 			assertTrue(ms < BOUND_MS, "checking took " + ms + " ms");
 			for (ModelDiagnostic d : loaded.diagnostics()) {

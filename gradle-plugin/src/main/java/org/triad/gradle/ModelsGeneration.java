@@ -9,6 +9,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
 
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.generator.arc.ArcJavaGenerator;
 import org.triad.generator.arc.HandwrittenCode;
@@ -72,7 +73,7 @@ public final class ModelsGeneration {
 		if (!Files.isDirectory(models)) {
 			throw new ModelsProblem("the models folder " + models + " is a file, not a folder");
 		}
-		LoadedApplication app = TriadJavaGenerator.load(models);
+		LoadedApplication app = ApplicationAssembler.load(models);
 		List<String> lines = app.diagnostics().stream().map(d -> d.format(app.root())).toList();
 		if (app.hasErrors()) {
 			throw new ModelsProblem("the models in " + models + " have errors:\n" + String.join("\n", lines));

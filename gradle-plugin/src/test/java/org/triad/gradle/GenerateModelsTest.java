@@ -24,7 +24,7 @@ import org.gradle.api.plugins.JavaPluginExtension;
 import org.gradle.testfixtures.ProjectBuilder;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 
 /**
@@ -104,7 +104,7 @@ class GenerateModelsTest {
 
 		GradleException e = assertThrows(GradleException.class, task::generate);
 		Path models = project.file("src/main/models").toPath();
-		LoadedApplication checked = ApplicationLoader.load(models); // what ./triad check prints for the folder
+		LoadedApplication checked = ApplicationAssembler.load(models); // what ./triad check prints for the folder
 		String lines = checked.diagnostics().stream().map(d -> d.format(checked.root())).collect(Collectors.joining("\n"));
 		assertEquals("the models in " + models + " have errors:\n" + lines, e.getMessage());
 		assertTrue(lines.startsWith("Broken.goal:3:13: error link.unknown-type: "), lines);

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.triad.dsl.app.ApplicationLoader;
+import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
 import org.triad.dsl.app.ModelDiagnostic;
 import org.triad.dsl.triad.Situation;
@@ -31,7 +31,7 @@ public final class ApplicationModels {
         if (!Files.isDirectory(dir)) {
             throw ServiceError.startup("not a folder: " + dir);
         }
-        LoadedApplication app = ApplicationLoader.load(dir);
+        LoadedApplication app = ApplicationAssembler.load(dir);
         if (app.hasErrors()) {
             StringBuilder b = new StringBuilder("the models have errors (run 'triad check " + dir + "'):");
             for (ModelDiagnostic d : app.diagnostics()) {

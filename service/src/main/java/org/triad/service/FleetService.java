@@ -19,7 +19,7 @@ import org.triad.refarc.fleet.FloorMap;
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.State;
 import org.triad.runtime.app.TaskInstance;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.runtime.schema.ModelTask;
 import org.triad.service.TaskCatalog.TaskCall;
 import org.triad.service.Views.EventView;
@@ -49,7 +49,7 @@ public final class FleetService implements AutoCloseable {
 
     private final TaskCatalog catalog;
     private final TaskStore store;
-    private final ModelPlanner estimator;
+    private final GoalSolver estimator;
     private final Clock clock;
     private final Map<String, RobotLane> lanes = new LinkedHashMap<>();
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
@@ -64,7 +64,7 @@ public final class FleetService implements AutoCloseable {
     private volatile long dispatchNanos;
     private volatile long dispatches;
 
-    public FleetService(TaskCatalog catalog, TaskStore store, List<FleetRobot> robots, ModelPlanner planner, Clock clock) {
+    public FleetService(TaskCatalog catalog, TaskStore store, List<FleetRobot> robots, GoalSolver planner, Clock clock) {
         this.catalog = catalog;
         this.store = store;
         this.estimator = planner;
@@ -351,7 +351,7 @@ public final class FleetService implements AutoCloseable {
                     cost = 0;
                     estimate = "0 actions";
                 } else {
-                    ModelPlanner.Outcome o = estimator.plan(first.name(), first.args(), s);
+                    GoalSolver.Outcome o = estimator.plan(first.name(), first.args(), s);
                     cost = o.planned() ? o.plan().size() : Integer.MAX_VALUE - 1;
                     estimate = o.planned() ? o.plan().size() + " action(s)" : "no plan";
                 }

@@ -17,7 +17,7 @@ import org.triad.refarc.fleet.RobotPlatformProvider;
 import org.triad.runtime.app.DomainObject;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.service.store.TaskStore;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -80,7 +80,7 @@ public final class TriadService implements AutoCloseable {
             AccessTokens tokens = AccessTokens.load(o.env(), o.config(), store);
             robots = connect(models, o);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
-            fleet = new FleetService(catalog, store, robots, new ModelPlanner(models.schema()), Clock.systemUTC());
+            fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
             HttpApi http = new HttpApi(fleet, tokens, openApi);
             int port;

@@ -10,7 +10,7 @@ import org.triad.refarc.RefArcRunner;
 import org.triad.refarc.Status;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.TaskInstance;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.vda5050.master.MasterControl;
 import org.triad.vda5050.master.RemoteAgv;
 
@@ -58,7 +58,7 @@ public final class VdaHospital {
     /** Runs the task through a fresh RefArc on this robot (synchronously), handing each status event to {@code progress}. */
     public RefArcRun run(TaskInstance task, Consumer<? super Status> progress) {
         RefArcRunner runner = new RefArcRunner(new HospitalStateProvider(courier, building),
-                new SchemaGoalPlanner(new ModelPlanner(HospitalSchema.SCHEMA)), new HospitalActionExecutor(courier, building));
+                new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), new HospitalActionExecutor(courier, building));
         return runner.run(task, progress);
     }
 }

@@ -23,7 +23,7 @@ import org.triad.refarc.Status;
 import org.triad.refarc.model.SchemaGoalPlanner;
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.State;
-import org.triad.runtime.schema.ModelPlanner;
+import org.triad.runtime.schema.GoalSolver;
 import org.triad.vda5050.broker.MosquittoBroker;
 import org.triad.vda5050.master.MasterControl;
 import org.triad.vda5050.master.ModelAgvActors;
@@ -144,7 +144,7 @@ class VdaFaultsTest {
             State believed = new HospitalStateProvider(morning.courier(), morning.building()).currentState().toBuilder()
                     .value(Atom.of("Courier", "loc"), morning.objects().room("storage")).build();
             ModelAgvActors actors = new ModelAgvActors(HospitalSchema.SCHEMA, believed, master.agv("courier-1"));
-            RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new ModelPlanner(HospitalSchema.SCHEMA)), actors)
+            RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), actors)
                     .run(new GoTo(morning.objects().room("ward3")), statuses::add);
             assertTrue(failures().lines().findFirst().orElse("")
                     .contains("rejected by AGV triad/courier-1: noRouteError: the order starts at storage but the AGV is at lobby"), failures());
