@@ -101,6 +101,9 @@ public final class HospitalDemo implements Callable<Integer> {
 	}
 
 	private static void checkWritable(Path dir) {
+		if (java.nio.file.Files.exists(dir) && !java.nio.file.Files.isDirectory(dir)) {
+			throw new IllegalArgumentException("-o " + dir + ": not a folder (a file of that name exists)");
+		}
 		try {
 			java.nio.file.Files.createDirectories(dir);
 			java.nio.file.Files.delete(java.nio.file.Files.createTempFile(dir, ".triad-", ".probe"));
