@@ -10,7 +10,8 @@ dependencies {
     implementation("org.triad:triad-generator:$triadVersion")
     implementation("org.triad:triad-refarc:$triadVersion")
     implementation(project(":pddl4j"))
-    implementation(project(":models:hospital"))
+    implementation(project(":vda5050")) // ./triad run with VDA 5050 robots, ./triad broker
+    implementation(project(":service")) // ./triad serve
     implementation("info.picocli:picocli:4.7.6")
 }
 

@@ -6,5 +6,5 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 cd "$here"
 mvn -B -q dependency:copy@gradle-artifacts
-java src/gradle-dist/AssembleGradle.java target/gradle-artifacts src/gradle-dist/shims target/gradle-8.10
+java -cp target/gradle-artifacts/gradle-api-8.10.jar src/gradle-dist/AssembleGradle.java target/gradle-artifacts src/gradle-dist/shims target/gradle-8.10
 echo "run: $here/target/gradle-8.10/bin/gradle --offline -p PROJECT TASK..."

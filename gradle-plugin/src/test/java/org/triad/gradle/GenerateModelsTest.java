@@ -17,7 +17,11 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.gradle.api.GradleException;
+import org.gradle.api.InvalidUserDataException;
 import org.gradle.api.Project;
+import org.gradle.api.ProjectConfigurationException;
+import org.gradle.api.internal.project.ProjectInternal;
+import org.gradle.api.provider.Property;
 import org.gradle.api.Task;
 import org.gradle.api.plugins.JavaPlugin;
 import org.gradle.api.plugins.JavaPluginExtension;
@@ -69,8 +73,27 @@ class GenerateModelsTest {
 		assertTrue(inputs.containsAll(Set.of(project.file("src/main/models"), project.file("src/main/arc"), refarc)), inputs.toString());
 		assertEquals(Set.of(task.getOutputDirectory().get().getAsFile()), task.getOutputs().getFiles().getFiles());
 		Map<String, Object> properties = task.getInputs().getProperties();
-		assertEquals("com.example.ward", properties.get("basePackage"));
-		assertEquals("", properties.get("architecturePackage"));
+		assertEquals(Map.of("basePackage", "com.example.ward"), properties);
+	}
+
+	@Test
+	void settingTheRemovedArchitecturePackageFailsTheConfigurationWithWhatToDoInstead() throws IOException {
+		Project project = modelsProject("hospital", "models/hospital");
+		@SuppressWarnings("deprecation")
+		Property<String> architecturePackage = project.getExtensions().getByType(TriadModelsExtension.class).getArchitecturePackage();
+		architecturePackage.set("org.triad");
+
+		ProjectConfigurationException e = assertThrows(ProjectConfigurationException.class, ((ProjectInternal) project)::evaluate);
+		assertEquals(InvalidUserDataException.class, e.getCause().getClass());
+		assertEquals("triad.architecturePackage is no longer supported: the package of an .arc model is the Java package of its component"
+				+ " (e.g. 'package org.triad.examples.hospital;' at the top of the .arc file); remove the setting", e.getCause().getMessage());
+	}
+
+	@Test
+	void aProjectThatLeavesTheArchitecturePackageAloneConfigures() throws IOException {
+		Project project = modelsProject("hospital", "models/hospital");
+		((ProjectInternal) project).evaluate();
+		assertTrue(project.getState().getExecuted());
 	}
 
 	@Test
@@ -80,9 +103,8 @@ class GenerateModelsTest {
 				"the Maven build of models/hospital runs before this module in the reactor and leaves " + maven);
 		Project project = modelsProject("hospital", "models/hospital");
 		TriadModelsExtension triad = project.getExtensions().getByType(TriadModelsExtension.class);
-		// what models/hospital/pom.xml gives ArcGeneratorMain
+		// models/hospital/pom.xml links against RefArc's models in refarc's jar, models/hospital/build.gradle.kts against its sources
 		triad.getArchitectureLibraries().from(ROOT.resolve("refarc/src/main/arc").toFile());
-		triad.getArchitecturePackage().set("org.triad");
 		GenerateModels task = generateModels(project);
 		task.generate();
 
