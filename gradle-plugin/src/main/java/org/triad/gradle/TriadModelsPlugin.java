@@ -29,13 +29,7 @@ public class TriadModelsPlugin implements Plugin<Project> {
 		TriadModelsExtension triad = project.getExtensions().create(EXTENSION_NAME, TriadModelsExtension.class);
 		triad.getModels().convention(layout.getProjectDirectory().dir("src/main/models"));
 		triad.getArchitecture().convention(layout.getProjectDirectory().dir("src/main/arc"));
-		project.afterEvaluate(p -> {
-			@SuppressWarnings("deprecation")
-			boolean architecturePackageSet = triad.getArchitecturePackage().isPresent();
-			if (architecturePackageSet) {
-				throw new InvalidUserDataException(ARCHITECTURE_PACKAGE_REMOVED);
-			}
-		});
+		project.afterEvaluate(p -> rejectRemovedSettings(triad));
 
 		TaskProvider<GenerateModels> generate = project.getTasks().register(TASK_NAME, GenerateModels.class, task -> {
 			task.setGroup("build");
@@ -49,5 +43,14 @@ public class TriadModelsPlugin implements Plugin<Project> {
 		// a source folder given as the task's output carries the task dependency to compileJava and the IDE import
 		project.getExtensions().getByType(JavaPluginExtension.class).getSourceSets().getByName(SourceSet.MAIN_SOURCE_SET_NAME)
 				.getJava().srcDir(generate.flatMap(GenerateModels::getOutputDirectory));
+	}
+
+	/** Fails the configuration of a build that sets what no longer has an effect, saying what to do instead. */
+	static void rejectRemovedSettings(TriadModelsExtension triad) {
+		@SuppressWarnings("deprecation")
+		boolean architecturePackageSet = triad.getArchitecturePackage().isPresent();
+		if (architecturePackageSet) {
+			throw new InvalidUserDataException(ARCHITECTURE_PACKAGE_REMOVED);
+		}
 	}
 }
