@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Assembles Gradle 8.10 from Maven Central artifacts alone into gradle-plugin/target/gradle-8.10
-# (bin/gradle; Groovy build scripts only, builds run in the launching JVM): what HospitalGradleBuildIT
+# (bin/gradle; Groovy build scripts only, builds run in the launching JVM, JUnit 5 tests run): what HospitalGradleBuildIT
 # runs. `mvn verify` in gradle-plugin does the same in its pre-integration-test phase.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

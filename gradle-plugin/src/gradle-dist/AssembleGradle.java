@@ -56,7 +56,9 @@ import org.gradle.internal.impldep.org.objectweb.asm.commons.Remapper;
  * (javac without Gradle's incremental-compilation bookkeeping, so every compileJava run is whole) and
  * {@code gradle-installation-beacon} (what {@code gradleApi()} looks for).
  * </ul>
- * No Kotlin DSL: Gradle publishes it to no registry these machines reach, so builds are Groovy scripts.
+ * No Kotlin DSL: gradle-api holds none of it (a .kts script stops at {@code ClassNotFoundException:
+ * org.gradle.kotlin.dsl.provider.KotlinScriptPluginFactory}) and Gradle publishes {@code gradle-kotlin-dsl}
+ * to no registry these machines reach, so builds are Groovy scripts.
  */
 public final class AssembleGradle {
 	private static final String VERSION = "8.10";

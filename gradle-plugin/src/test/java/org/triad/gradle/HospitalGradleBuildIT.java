@@ -39,6 +39,8 @@ class HospitalGradleBuildIT {
 	/** The hospital's tests that need no MQTT broker: the simulated robot and the floor plan. */
 	private static final List<String> SIMULATION_TESTS = List.of("org.triad.examples.hospital.SimulatedCourierTest",
 			"org.triad.examples.hospital.HospitalFloorTest");
+	/** Shared by the tests' builds: Gradle instruments a build script's class path (the Triad libraries) once per user home. */
+	private static final Path USER_HOME = Path.of("target/gradle-user-home").toAbsolutePath();
 	private static final Path GRADLE = Path.of(System.getProperty("gradle.home", "target/gradle-8.10")).resolve("bin/gradle");
 
 	@Test
@@ -136,7 +138,7 @@ class HospitalGradleBuildIT {
 
 	private static Run gradle(Path work, Path project, String... tasks) throws IOException, InterruptedException {
 		List<String> command = new ArrayList<>(List.of(GRADLE.toString(), "--offline", "--no-daemon", "--console=plain",
-				"-g", work.resolve("gradle-user-home").toString(), "-p", project.toString()));
+				"-g", USER_HOME.toString(), "-p", project.toString()));
 		command.addAll(List.of(tasks));
 		Path log = work.resolve("gradle-" + tasks.length + "-" + tasks[0] + ".log");
 		Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
