@@ -3,12 +3,7 @@ plugins {
     java
 }
 
-val triadVersion: String by project
-
 dependencies {
-    // Maven passes cli's dependencies on to the tests; Gradle's implementation scope does not, so they are named
-    testImplementation("org.triad:triad-dsl:$triadVersion")
-    testImplementation("org.triad:triad-generator:$triadVersion")
     testImplementation(project(":cli"))
     testImplementation(project(":models:hospital"))
     testImplementation(project(":sim"))
