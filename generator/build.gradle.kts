@@ -7,7 +7,6 @@ val xtend: Configuration by configurations.creating
 dependencies {
     api(project(":triad-dsl"))
     api(project(":triad-runtime"))
-    api(project(":triad-refarc"))
     api("org.eclipse.xtext:org.eclipse.xtend.lib:$xtextVersion")
     xtend("org.eclipse.xtext:org.eclipse.xtend.core:$xtextVersion")
 }

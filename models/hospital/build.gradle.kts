@@ -11,12 +11,13 @@ dependencies {
     api("org.triad:triad-runtime:$triadVersion")
     api("org.triad:triad-refarc:$triadVersion")
     api(project(":sim"))
+    api(project(":vda5050")) // the hospital as VDA 5050 robots on a broker (package vda5050)
+    implementation("info.picocli:picocli:4.7.6") // HospitalDemo's options (./triad demo launches it)
 }
 
 triad {
     // the architecture extends RefArc, whose .arc models it links against
     architectureLibraries.from(rootProject.file("refarc/src/main/arc"))
-    architecturePackage.set("org.triad")
 }
 
 tasks.withType<JavaCompile>().configureEach {

@@ -24,9 +24,15 @@ import java.util.stream.Stream;
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 
+import org.gradle.internal.impldep.org.objectweb.asm.ClassReader;
+import org.gradle.internal.impldep.org.objectweb.asm.ClassWriter;
+import org.gradle.internal.impldep.org.objectweb.asm.commons.ClassRemapper;
+import org.gradle.internal.impldep.org.objectweb.asm.commons.Remapper;
+
 /**
  * Lays out a Gradle 8.10 installation from Maven Central artifacts alone:
- * {@code java AssembleGradle.java ARTIFACTS_DIR SHIMS_DIR OUTPUT_DIR}.
+ * {@code java -cp ARTIFACTS_DIR/gradle-api-8.10.jar AssembleGradle.java ARTIFACTS_DIR SHIMS_DIR OUTPUT_DIR}
+ * (the class path lends it the jar's relocated ASM).
  *
  * <p>{@code dev.gradleplugins:gradle-api:8.10} holds Gradle's classes (its third-party libraries
  * relocated) and the module manifests {@code gradle-*-classpath.properties} that Gradle's module
@@ -37,20 +43,33 @@ import javax.tools.ToolProvider;
  * <li>one small jar per module holding only its module manifest, whose jar manifest's
  * {@code Class-Path} names {@code gradle-classes} (module implementation class paths, e.g. a worker
  * process's, are module jars alone);
- * <li>the unrelocated libraries (Groovy, Kotlin's standard library) from ARTIFACTS_DIR, and an empty
- * placeholder for every relocated one, so the module registry finds each name it looks for;
+ * <li>the unrelocated libraries (Groovy, Kotlin's standard library, the JUnit Platform launcher that
+ * test workers run) from ARTIFACTS_DIR, and an empty placeholder for every relocated one, so the module
+ * registry finds each name it looks for;
+ * <li>in {@code gradle-classes}, the classes of Gradle's JUnit Platform test framework (the test
+ * worker's launcher session and listener, and the framework's shared packages and distribution modules)
+ * with their references to the relocated JUnit Platform turned back into the real one, as in a
+ * distribution of Gradle: the relocated launcher finds no test engine, since the project's engines
+ * implement the real {@code org.junit.platform.engine.TestEngine};
  * <li>the modules the jar lacks, built from {@code shims/}: {@code gradle-gradle-cli} (the
  * command-line entry, running the build in the launching JVM), {@code gradle-java-compiler-plugin}
  * (javac without Gradle's incremental-compilation bookkeeping, so every compileJava run is whole) and
  * {@code gradle-installation-beacon} (what {@code gradleApi()} looks for).
  * </ul>
- * No Kotlin DSL: Gradle publishes it to no registry these machines reach, so builds are Groovy scripts.
+ * No Kotlin DSL: gradle-api holds none of it (a .kts script stops at {@code ClassNotFoundException:
+ * org.gradle.kotlin.dsl.provider.KotlinScriptPluginFactory}) and Gradle publishes {@code gradle-kotlin-dsl}
+ * to no registry these machines reach, so builds are Groovy scripts.
  */
 public final class AssembleGradle {
 	private static final String VERSION = "8.10";
 	private static final String CLASSES = "gradle-classes-" + VERSION + ".jar";
 	private static final String SFTP_PROVIDER = "META-INF/services/java.nio.file.spi.FileSystemProvider";
 	private static final String JAR_INDEX = "META-INF/INDEX.LIST";
+	private static final String JUNIT_PLATFORM_FRAMEWORK = "org/gradle/api/internal/tasks/testing/junitplatform/";
+	private static final String IMPLDEP = "org/gradle/internal/impldep/";
+	private static final List<String> UNRELOCATED = List.of("org/junit/", "org/opentest4j/");
+	/** Part of the up-to-date stamp: changes whenever this program lays out lib/ differently. */
+	private static final String LAYOUT = "layout 2: the JUnit Platform test framework unrelocated";
 
 	public static void main(String[] args) throws IOException {
 		if (args.length != 3) {
@@ -65,7 +84,7 @@ public final class AssembleGradle {
 			System.err.println("assemble-gradle: " + api + " is missing (mvn dependency:copy@gradle-artifacts fetches it)");
 			System.exit(2);
 		}
-		String stamp = stamp(artifacts, shims);
+		String stamp = LAYOUT + "\n" + stamp(artifacts, shims);
 		Path stampFile = out.resolve(".assembled");
 		if (Files.isRegularFile(stampFile) && Files.readString(stampFile).equals(stamp) && Files.isExecutable(out.resolve("bin/gradle"))) {
 			System.out.println("Gradle " + VERSION + " in " + out + " is up to date");
@@ -74,7 +93,7 @@ public final class AssembleGradle {
 		deleteTree(out);
 		Path lib = Files.createDirectories(out.resolve("lib"));
 		Files.createDirectories(lib.resolve("plugins")); // Gradle recognises its installation by lib/plugins
-		copyWithout(api, lib.resolve(CLASSES), Set.of(SFTP_PROVIDER, JAR_INDEX));
+		copyWithout(api, lib.resolve(CLASSES), Set.of(SFTP_PROVIDER, JAR_INDEX), junitPlatformFrameworkUnrelocated(api));
 
 		Map<String, Properties> manifests = manifests(api);
 		TreeSet<String> runtimeLibraries = new TreeSet<>();
@@ -189,7 +208,7 @@ public final class AssembleGradle {
 		}
 	}
 
-	private static void copyWithout(Path from, Path to, Set<String> skipped) throws IOException {
+	private static void copyWithout(Path from, Path to, Set<String> skipped, Map<String, byte[]> replaced) throws IOException {
 		try (JarFile in = new JarFile(from.toFile()); JarOutputStream out = new JarOutputStream(Files.newOutputStream(to))) {
 			byte[] buffer = new byte[1 << 16];
 			for (Enumeration<JarEntry> e = in.entries(); e.hasMoreElements();) {
@@ -198,6 +217,11 @@ public final class AssembleGradle {
 					continue;
 				}
 				out.putNextEntry(new JarEntry(entry.getName()));
+				if (replaced.containsKey(entry.getName())) {
+					out.write(replaced.get(entry.getName()));
+					out.closeEntry();
+					continue;
+				}
 				try (InputStream s = in.getInputStream(entry)) {
 					for (int n; (n = s.read(buffer)) > 0;) {
 						out.write(buffer, 0, n);
@@ -206,6 +230,61 @@ public final class AssembleGradle {
 				out.closeEntry();
 			}
 		}
+	}
+
+	/**
+	 * The classes of Gradle's JUnit Platform test framework that name the relocated JUnit Platform (as
+	 * types, or as class and package names in strings), rewritten to name the real one, which the
+	 * project's test runtime class path (or lib/) provides as in a distribution of Gradle.
+	 */
+	private static Map<String, byte[]> junitPlatformFrameworkUnrelocated(Path api) throws IOException {
+		Remapper unrelocate = new Remapper() {
+			@Override
+			public String map(String internalName) {
+				return unrelocated(internalName, IMPLDEP);
+			}
+
+			@Override
+			public Object mapValue(Object value) {
+				return value instanceof String s ? unrelocated(unrelocated(s, IMPLDEP), IMPLDEP.replace('/', '.')) : super.mapValue(value);
+			}
+		};
+		Map<String, byte[]> result = new LinkedHashMap<>();
+		try (JarFile jar = new JarFile(api.toFile())) {
+			for (Enumeration<JarEntry> e = jar.entries(); e.hasMoreElements();) {
+				JarEntry entry = e.nextElement();
+				if (!entry.getName().startsWith(JUNIT_PLATFORM_FRAMEWORK) || !entry.getName().endsWith(".class")) {
+					continue;
+				}
+				byte[] original;
+				try (InputStream in = jar.getInputStream(entry)) {
+					original = in.readAllBytes();
+				}
+				String constants = new String(original, StandardCharsets.ISO_8859_1);
+				if (UNRELOCATED.stream().anyMatch(prefix -> constants.contains(IMPLDEP + prefix)
+						|| constants.contains((IMPLDEP + prefix).replace('/', '.').replaceAll("\\.$", "")))) {
+					ClassWriter writer = new ClassWriter(0);
+					new ClassReader(original).accept(new ClassRemapper(writer, unrelocate), 0);
+					result.put(entry.getName(), writer.toByteArray());
+				}
+			}
+		}
+		if (result.isEmpty()) {
+			throw new IllegalStateException("no class of " + JUNIT_PLATFORM_FRAMEWORK + " in " + api + " uses the relocated JUnit Platform");
+		}
+		return result;
+	}
+
+	/** {@code name} without the relocation prefix when it names a relocated JUnit Platform or opentest4j class or package. */
+	private static String unrelocated(String name, String relocation) {
+		for (String prefix : UNRELOCATED) {
+			String p = relocation.endsWith(".") ? prefix.replace('/', '.') : prefix;
+			String relocated = relocation + p;
+			if (name.startsWith(relocated) || name.equals(relocated.substring(0, relocated.length() - 1))) {
+				return name.substring(relocation.length());
+			}
+		}
+		return name;
 	}
 
 	private static Path compileShims(Path sources, Path classesDir, Path gradleClasses, Path artifacts) throws IOException {

@@ -39,9 +39,6 @@ public abstract class GenerateModels extends DefaultTask {
 	public abstract ConfigurableFileCollection getArchitectureLibraries();
 
 	@Input
-	public abstract Property<String> getArchitecturePackage();
-
-	@Input
 	@Optional
 	public abstract Property<String> getBasePackage();
 
@@ -56,7 +53,6 @@ public abstract class GenerateModels extends DefaultTask {
 					getModels().get().getAsFile().toPath(),
 					getArchitecture().isPresent() ? getArchitecture().get().getAsFile().toPath() : null,
 					getArchitectureLibraries().getFiles().stream().map(File::toPath).toList(),
-					getArchitecturePackage().getOrElse(""),
 					getBasePackage().getOrNull(),
 					getOutputDirectory().get().getAsFile().toPath()));
 		} catch (ModelsGeneration.ModelsProblem e) {

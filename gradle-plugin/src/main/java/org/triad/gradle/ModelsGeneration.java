@@ -29,15 +29,12 @@ public final class ModelsGeneration {
 	 * @param models                the application's model folder (.cd .actor .goal .task .state); must exist
 	 * @param architecture          the .arc model folder; skipped when absent or missing
 	 * @param architectureLibraries .arc folders the architecture links against (e.g. RefArc's), not generated
-	 * @param architecturePackage   base Java package of the architecture's components ("" for none)
 	 * @param basePackage           base Java package of the application, or null for {@code generated.<application>}
 	 * @param output                the folder to fill; emptied first, so a removed model leaves no stale class
 	 */
-	public record Request(Path models, Path architecture, List<Path> architectureLibraries, String architecturePackage,
-			String basePackage, Path output) {
+	public record Request(Path models, Path architecture, List<Path> architectureLibraries, String basePackage, Path output) {
 		public Request {
 			architectureLibraries = List.copyOf(architectureLibraries);
-			architecturePackage = architecturePackage == null ? "" : architecturePackage;
 		}
 	}
 
@@ -119,7 +116,7 @@ public final class ModelsGeneration {
 				Path target = output.resolve(scratch.relativize(file).toString());
 				if (Files.exists(target)) {
 					throw new ModelsProblem("the architecture and the application both generate " + output.relativize(target)
-							+ ": rename the component or set triad.architecturePackage");
+							+ ": rename the component or move it to another .arc package");
 				}
 				Files.createDirectories(target.getParent());
 				Files.move(file, target);

@@ -18,7 +18,14 @@ public abstract class TriadModelsExtension {
 	/** Folders of .arc models the architecture uses without generating them, e.g. RefArc's {@code refarc/src/main/arc}. */
 	public abstract ConfigurableFileCollection getArchitectureLibraries();
 
-	/** The base Java package of the architecture's components (default: none, the .arc packages as they are). */
+	/**
+	 * No longer has an effect, and setting it fails the build: an .arc model's package is its Java
+	 * package. Kept so that builds which still set it get {@link TriadModelsPlugin#ARCHITECTURE_PACKAGE_REMOVED}
+	 * rather than an unknown-property error.
+	 *
+	 * @deprecated write the package into the .arc models instead
+	 */
+	@Deprecated
 	public abstract Property<String> getArchitecturePackage();
 
 	/** The application's Java package (default: {@code generated.<application>}). */

@@ -1,5 +1,6 @@
 package org.triad.gradle;
 
+import org.gradle.api.InvalidUserDataException;
 import org.gradle.api.Plugin;
 import org.gradle.api.Project;
 import org.gradle.api.file.ProjectLayout;
@@ -17,6 +18,9 @@ public class TriadModelsPlugin implements Plugin<Project> {
 	public static final String TASK_NAME = "generateModels";
 	public static final String EXTENSION_NAME = "triad";
 	public static final String OUTPUT_PATH = "generated/sources/triad";
+	static final String ARCHITECTURE_PACKAGE_REMOVED = "triad.architecturePackage is no longer supported: the package of an .arc"
+			+ " model is the Java package of its component (e.g. 'package org.triad.examples.hospital;' at the top of the .arc file);"
+			+ " remove the setting";
 
 	@Override
 	public void apply(Project project) {
@@ -25,7 +29,7 @@ public class TriadModelsPlugin implements Plugin<Project> {
 		TriadModelsExtension triad = project.getExtensions().create(EXTENSION_NAME, TriadModelsExtension.class);
 		triad.getModels().convention(layout.getProjectDirectory().dir("src/main/models"));
 		triad.getArchitecture().convention(layout.getProjectDirectory().dir("src/main/arc"));
-		triad.getArchitecturePackage().convention("");
+		project.afterEvaluate(p -> rejectRemovedSettings(triad));
 
 		TaskProvider<GenerateModels> generate = project.getTasks().register(TASK_NAME, GenerateModels.class, task -> {
 			task.setGroup("build");
@@ -33,12 +37,20 @@ public class TriadModelsPlugin implements Plugin<Project> {
 			task.getModels().set(triad.getModels());
 			task.getArchitecture().set(triad.getArchitecture());
 			task.getArchitectureLibraries().from(triad.getArchitectureLibraries());
-			task.getArchitecturePackage().set(triad.getArchitecturePackage());
 			task.getBasePackage().set(triad.getBasePackage());
 			task.getOutputDirectory().convention(layout.getBuildDirectory().dir(OUTPUT_PATH));
 		});
 		// a source folder given as the task's output carries the task dependency to compileJava and the IDE import
 		project.getExtensions().getByType(JavaPluginExtension.class).getSourceSets().getByName(SourceSet.MAIN_SOURCE_SET_NAME)
 				.getJava().srcDir(generate.flatMap(GenerateModels::getOutputDirectory));
+	}
+
+	/** Fails the configuration of a build that sets what no longer has an effect, saying what to do instead. */
+	static void rejectRemovedSettings(TriadModelsExtension triad) {
+		@SuppressWarnings("deprecation")
+		boolean architecturePackageSet = triad.getArchitecturePackage().isPresent();
+		if (architecturePackageSet) {
+			throw new InvalidUserDataException(ARCHITECTURE_PACKAGE_REMOVED);
+		}
 	}
 }

@@ -17,7 +17,9 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.gradle.api.GradleException;
+import org.gradle.api.InvalidUserDataException;
 import org.gradle.api.Project;
+import org.gradle.api.provider.Property;
 import org.gradle.api.Task;
 import org.gradle.api.plugins.JavaPlugin;
 import org.gradle.api.plugins.JavaPluginExtension;
@@ -33,6 +35,8 @@ import org.triad.dsl.app.LoadedApplication;
  */
 class GenerateModelsTest {
 	private static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
+	static final String ARCHITECTURE_PACKAGE_REMOVED = "triad.architecturePackage is no longer supported: the package of an .arc model is the"
+			+ " Java package of its component (e.g. 'package org.triad.examples.hospital;' at the top of the .arc file); remove the setting";
 
 	@TempDir
 	Path tmp;
@@ -69,8 +73,22 @@ class GenerateModelsTest {
 		assertTrue(inputs.containsAll(Set.of(project.file("src/main/models"), project.file("src/main/arc"), refarc)), inputs.toString());
 		assertEquals(Set.of(task.getOutputDirectory().get().getAsFile()), task.getOutputs().getFiles().getFiles());
 		Map<String, Object> properties = task.getInputs().getProperties();
-		assertEquals("com.example.ward", properties.get("basePackage"));
-		assertEquals("", properties.get("architecturePackage"));
+		assertEquals(Map.of("basePackage", "com.example.ward"), properties);
+	}
+
+	/** What the plugin checks once the build script ran (ProjectBuilder cannot evaluate a project here; HospitalGradleBuildIT's Gradle does). */
+	@Test
+	void settingTheRemovedArchitecturePackageFailsWithWhatToDoInstead() throws IOException {
+		Project project = modelsProject("hospital", "models/hospital");
+		TriadModelsExtension triad = project.getExtensions().getByType(TriadModelsExtension.class);
+		TriadModelsPlugin.rejectRemovedSettings(triad); // not set: nothing to reject
+
+		@SuppressWarnings("deprecation")
+		Property<String> architecturePackage = triad.getArchitecturePackage();
+		architecturePackage.set("org.triad");
+		InvalidUserDataException e = assertThrows(InvalidUserDataException.class, () -> TriadModelsPlugin.rejectRemovedSettings(triad));
+		assertEquals(ARCHITECTURE_PACKAGE_REMOVED, e.getMessage());
+		assertFalse(generateModels(project).getInputs().getProperties().containsKey("architecturePackage"));
 	}
 
 	@Test
@@ -80,9 +98,8 @@ class GenerateModelsTest {
 				"the Maven build of models/hospital runs before this module in the reactor and leaves " + maven);
 		Project project = modelsProject("hospital", "models/hospital");
 		TriadModelsExtension triad = project.getExtensions().getByType(TriadModelsExtension.class);
-		// what models/hospital/pom.xml gives ArcGeneratorMain
+		// models/hospital/pom.xml links against RefArc's models in refarc's jar, models/hospital/build.gradle.kts against its sources
 		triad.getArchitectureLibraries().from(ROOT.resolve("refarc/src/main/arc").toFile());
-		triad.getArchitecturePackage().set("org.triad");
 		GenerateModels task = generateModels(project);
 		task.generate();
 

@@ -14,8 +14,12 @@ import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -25,12 +29,18 @@ import org.junit.jupiter.api.Test;
  * Real Gradle 8.10, assembled from Maven Central artifacts (target/gradle-8.10, see
  * src/gradle-dist/AssembleGradle.java), builds a copy of the hospital models project with the
  * org.triad.models plugin: {@code gradle generateModels build} generates exactly what the Maven build
- * generates, compiles the robotics expert's code and tests against it; a second
- * {@code generateModels} is UP-TO-DATE (two Gradle runs: each costs a JVM start and Gradle's
- * configuration; GenerateModelsTest checks what the task declares as inputs).
+ * generates, compiles the robotics expert's code and tests against it and runs the simulation's tests
+ * with JUnit 5 in Gradle's test task (the VDA 5050 tests, which start a Mosquitto broker, are left to
+ * the Maven build); a second {@code generateModels} is UP-TO-DATE (two Gradle runs: each costs a JVM
+ * start and Gradle's configuration; GenerateModelsTest checks what the task declares as inputs).
  */
 class HospitalGradleBuildIT {
 	private static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
+	/** The hospital's tests that need no MQTT broker: the simulated robot and the floor plan. */
+	private static final List<String> SIMULATION_TESTS = List.of("org.triad.examples.hospital.SimulatedCourierTest",
+			"org.triad.examples.hospital.HospitalFloorTest");
+	/** Shared by the tests' builds: Gradle instruments a build script's class path (the Triad libraries) once per user home. */
+	private static final Path USER_HOME = Path.of("target/gradle-user-home").toAbsolutePath();
 	private static final Path GRADLE = Path.of(System.getProperty("gradle.home", "target/gradle-8.10")).resolve("bin/gradle");
 
 	@Test
@@ -44,8 +54,8 @@ class HospitalGradleBuildIT {
 		Files.writeString(project.resolve("gradle.properties"), "triadClasspath=" + triadClasspath() + "\n"
 				+ "refarcModels=" + ROOT.resolve("refarc/src/main/arc") + "\n", StandardCharsets.UTF_8);
 
-		// -x test: this Gradle's test task cannot run JUnit 5 (gradle-api relocates the JUnit Platform it drives), see README
-		Run build = gradle(work, project, "generateModels", "build", "testClasses", "-x", "test");
+		Run build = gradle(work, project, "generateModels", "build", "test", "--tests", SIMULATION_TESTS.get(0), "--tests",
+				SIMULATION_TESTS.get(1));
 		assertEquals(0, build.exit(), build.output());
 		assertTrue(build.output().contains("BUILD SUCCESSFUL"), build.output());
 		assertTrue(build.output().contains("> Task :generateModels\n"), build.output());
@@ -63,11 +73,56 @@ class HospitalGradleBuildIT {
 			assertTrue(jar.getEntry("org/triad/examples/hospital/VerifiedHospital.class") != null);
 			assertTrue(jar.getEntry("org/triad/examples/hospital/SimulatedCourier.class") != null);
 		}
-		assertTrue(Files.isRegularFile(project.resolve("build/classes/java/test/org/triad/examples/hospital/SimulatedCourierTest.class")));
+		assertTrue(Files.isRegularFile(project.resolve("build/classes/java/test/org/triad/examples/hospital/vda5050/VdaRobotTest.class")));
+		for (String testClass : SIMULATION_TESTS) {
+			Path source = project.resolve("src/test/java/" + testClass.replace('.', '/') + ".java");
+			Path report = project.resolve("build/test-results/test/TEST-" + testClass + ".xml");
+			assertTrue(Files.isRegularFile(report), "Gradle's test task ran " + testClass + " and reported it in " + report);
+			String xml = Files.readString(report);
+			assertEquals(testMethods(Files.readString(source)), reported(xml, "<testcase name=\"(\\w+)"), testClass);
+			assertEquals(List.of("0"), reported(xml, "failures=\"(\\d+)\"").stream().toList(), xml);
+			assertEquals(List.of("0"), reported(xml, "errors=\"(\\d+)\"").stream().toList(), xml);
+			assertEquals(List.of("0"), reported(xml, "skipped=\"(\\d+)\"").stream().toList(), xml);
+		}
 
 		Run again = gradle(work, project, "generateModels");
 		assertEquals(0, again.exit(), again.output());
 		assertTrue(again.output().contains("> Task :generateModels UP-TO-DATE"), again.output());
+	}
+
+	@Test
+	void aBuildThatSetsTheRemovedArchitecturePackageFailsItsConfigurationWithWhatToDo() throws Exception {
+		assertTrue(Files.isExecutable(GRADLE), "the pre-integration-test phase assembles " + GRADLE);
+		Path work = Path.of("target/gradle-it-legacy").toAbsolutePath();
+		deleteTree(work);
+		Path project = Files.createDirectories(work.resolve("legacy"));
+		Files.writeString(project.resolve("settings.gradle"), "rootProject.name = 'legacy'\n");
+		Files.writeString(project.resolve("build.gradle"), String.join("\n",
+				"buildscript { dependencies { classpath files(triadClasspath.split(File.pathSeparator)) } }",
+				"apply plugin: 'org.triad.models'",
+				"triad { architecturePackage = 'org.triad' }", ""));
+		Files.writeString(project.resolve("gradle.properties"), "triadClasspath=" + triadClasspath() + "\n", StandardCharsets.UTF_8);
+
+		Run build = gradle(work, project, "generateModels");
+		assertEquals(1, build.exit(), build.output());
+		assertTrue(build.output().contains("* What went wrong:\nA problem occurred configuring root project 'legacy'.\n> "
+				+ GenerateModelsTest.ARCHITECTURE_PACKAGE_REMOVED + "\n"), build.output());
+		assertFalse(build.output().contains("\tat "), "no stack trace:\n" + build.output());
+	}
+
+	/** The names of a JUnit 5 test class's test methods. */
+	private static Set<String> testMethods(String source) {
+		return reported(source, "@Test\\s+(?:public\\s+)?void\\s+(\\w+)\\(");
+	}
+
+	/** Every first group of {@code regex} in {@code text}. */
+	private static Set<String> reported(String text, String regex) {
+		Set<String> found = new TreeSet<>();
+		Matcher m = Pattern.compile(regex).matcher(text);
+		while (m.find()) {
+			found.add(m.group(1));
+		}
+		return found;
 	}
 
 	/** The Triad libraries and their dependencies: this JVM's class path without the hospital's own Maven build and this module's tests. */
@@ -83,7 +138,7 @@ class HospitalGradleBuildIT {
 
 	private static Run gradle(Path work, Path project, String... tasks) throws IOException, InterruptedException {
 		List<String> command = new ArrayList<>(List.of(GRADLE.toString(), "--offline", "--no-daemon", "--console=plain",
-				"-g", work.resolve("gradle-user-home").toString(), "-p", project.toString()));
+				"-g", USER_HOME.toString(), "-p", project.toString()));
 		command.addAll(List.of(tasks));
 		Path log = work.resolve("gradle-" + tasks.length + "-" + tasks[0] + ".log");
 		Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
