@@ -47,14 +47,33 @@ public final class TriadEngine implements PddlPlanner {
      */
     static final long GRAPH_SEARCH_WORK = 300_000;
 
+    /** Default cap on the time spent making a first plan shorter ({@link PlanImprover}). */
+    public static final Duration IMPROVEMENT_CAP = Duration.ofSeconds(10);
+    /**
+     * Time granted to improving a plan from a search that is not exact, besides twice the time to
+     * the first plan: enough for a few rounds of neighbourhood search on small tasks.
+     */
+    static final long IMPROVEMENT_EXTRA_NANOS = 50_000_000L;
+
     private final GroundedProblemCache cache;
+    private final long improvementCapNanos;
 
     public TriadEngine() {
         this(new GroundedProblemCache(8));
     }
 
     public TriadEngine(GroundedProblemCache cache) {
+        this(cache, IMPROVEMENT_CAP);
+    }
+
+    /**
+     * @param improvementCap the most time spent after the first plan looking for a shorter one (on
+     *     top of the first plan's time, it is at most twice that time plus 50 ms; zero keeps the first
+     *     plan after removing redundant actions)
+     */
+    public TriadEngine(GroundedProblemCache cache, Duration improvementCap) {
         this.cache = cache;
+        this.improvementCapNanos = improvementCap.toNanos();
     }
 
     public GroundedProblemCache cache() {
@@ -98,10 +117,13 @@ public final class TriadEngine implements PddlPlanner {
         long[] effort = new long[2];
         int[] plan = null;
 
+        boolean exact = false;
+        boolean fromAgenda = false;
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
         if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
             plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
+            exact = true;
             if (plan == null) return SolveResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
         } else if (open.size() <= 1) {
             boolean tryAstar = true;
@@ -110,7 +132,10 @@ public final class TriadEngine implements PddlPlanner {
                         .run(q.init(), q.goalPos(), q.goalNeg());
                 effort[0] += r.expanded();
                 effort[1] += r.generated();
-                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
+                    plan = r.plan();
+                    exact = true;
+                }
                 if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
                     return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
                 }
@@ -129,6 +154,7 @@ public final class TriadEngine implements PddlPlanner {
             // the agenda may use a tenth of the time; the complete search gets the rest
             long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
             plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), h, open, effort);
+            fromAgenda = plan != null;
         }
         if (plan == null && System.nanoTime() < deadline) {
             Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
@@ -141,7 +167,17 @@ public final class TriadEngine implements PddlPlanner {
             }
         }
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
-        plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        if (exact || improvementCapNanos <= 0) {
+            plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        } else {
+            long now = System.nanoTime();
+            long firstPlan = now - searchStart + (long) (groundMs * 1e6);
+            // a single goal's A* plan is near shortest: only twice its time, so small goals stay fast
+            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_NANOS;
+            long budget = Math.min(improvementCapNanos, 2 * firstPlan + extra);
+            long until = Math.min(deadline, now + budget);
+            plan = new PlanImprover(task, h, succ, until, effort).improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
+        }
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));

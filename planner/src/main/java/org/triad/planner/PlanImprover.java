@@ -1,0 +1,103 @@
+package org.triad.planner;
+
+/**
+ * Makes a first plan shorter within a time budget, keeping the shortest valid plan found:
+ * <ol>
+ * <li>action elimination ({@link PlanShortener}) and plan neighbourhood graph search
+ *     ({@link PlanNeighbourhoodSearch}) on the first plan;</li>
+ * <li>when the first plan came from the goal agenda: LAMA's first iteration (lazy greedy search,
+ *     FF and landmark count, preferred operators), which finds other plans where the agenda's
+ *     goal order forces detours; its plan is post-processed the same way;</li>
+ * <li>restarts of weighted A* (weights 5, 3, 2, preferred operators) that only look for plans shorter
+ *     than the best so far, each result post-processed again.</li>
+ * </ol>
+ * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
+ * extra time (apart from one step's last heuristic evaluation).
+ */
+final class PlanImprover {
+    /** Weighted A* restarts, as in LAMA's later iterations. */
+    static final int[] WEIGHTS = {5, 3, 2};
+    /** Largest plan neighbourhood explored (states), a memory bound. */
+    static final int NEIGHBOURHOOD_STATES = 200_000;
+
+    private final SearchTask task;
+    private final FfHeuristic heuristic;
+    private final Successors successors;
+    private final long deadline;
+    private final long[] effort;
+    private boolean shortest;
+
+    /**
+     * @param deadlineNanos {@link System#nanoTime()} when improving stops
+     * @param effort expanded and evaluated counters to add to
+     */
+    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort) {
+        this.task = task;
+        this.heuristic = heuristic;
+        this.successors = successors;
+        this.deadline = deadlineNanos;
+        this.effort = effort;
+    }
+
+    /** The shortest plan found, never longer than {@code plan} (a valid plan for the goal). */
+    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
+        shortest = false;
+        int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
+        trace("agenda shortened", best);
+        if (tryLazyGreedy && !expired()) {
+            Landmarks lms = new Landmarks(task, init, goalPos, deadline);
+            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg);
+            count(r);
+            trace("lazy " + r.outcome(), r.plan());
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
+                best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
+            }
+        }
+        // half of what is left, so that the restarts below get time when the neighbourhood stops helping
+        best = neighbourhood(init, goalPos, goalNeg, best, System.nanoTime() + (deadline - System.nanoTime()) / 2);
+        if (shortest) return best;
+        for (int w : WEIGHTS) {
+            if (shortest || expired() || best.length <= 1) break;
+            BestFirstSearch.Result r = new BestFirstSearch(task, heuristic, successors, deadline).boundLength(best.length)
+                    .run(init, goalPos, goalNeg, 1, w, true, Long.MAX_VALUE);
+            count(r);
+            trace("wa* " + w + " " + r.outcome(), r.plan());
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
+            // exhausted under the bound: no shorter plan exists for any weight
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
+        }
+        return best;
+    }
+
+    static final boolean TRACE = System.getenv("TRIAD_TRACE") != null;
+    static void trace(String what, int[] plan) {
+        if (TRACE) System.err.printf("%d %s %d%n", System.nanoTime() / 1000000, what, plan == null ? -1 : plan.length);
+    }
+
+    private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
+        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), deadline);
+    }
+
+    private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until) {
+        if (expired()) return plan;
+        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(successors, NEIGHBOURHOOD_STATES, until);
+        plan = pngs.improve(init, goalPos, goalNeg, plan);
+        trace("pngs", plan);
+        // the neighbourhood was the whole reachable space: nothing shorter exists
+        shortest |= pngs.provedShortest();
+        return plan;
+    }
+
+    private void count(BestFirstSearch.Result r) {
+        effort[0] += r.expanded();
+        effort[1] += r.evaluated();
+    }
+
+    private boolean expired() {
+        return System.nanoTime() >= deadline;
+    }
+
+    private static int[] shorter(int[] a, int[] b) {
+        return b.length < a.length ? b : a;
+    }
+}
