@@ -17,21 +17,28 @@ package org.triad.planner;
 final class PlanImprover {
     /** Weighted A* restarts, as in LAMA's later iterations. */
     static final int[] WEIGHTS = {5, 3, 2};
-    /** Largest plan neighbourhood explored (states), a memory bound. */
+    /** Largest plan neighbourhood explored (states) ... */
     static final int NEIGHBOURHOOD_STATES = 200_000;
+    /** ... and at most this many facts stored in its states, a memory bound of about 64 MB. */
+    static final int NEIGHBOURHOOD_FACTS = 16_000_000;
 
     private final SearchTask task;
     private final FfHeuristic heuristic;
     private final Successors successors;
     private final long deadline;
     private final long[] effort;
+    private final long searchEvaluations;
     private boolean shortest;
+    private PlanNeighbourhoodSearch neighbourhood;
 
     /**
      * @param deadlineNanos {@link System#nanoTime()} when improving stops
      * @param effort expanded and evaluated counters to add to
+     * @param searchEvaluations heuristic evaluations allowed to each search (the lazy one and every
+     *     restart): where a search needs many more than the first plan did, it rarely pays off
      */
-    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort) {
+    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations) {
+        this.searchEvaluations = searchEvaluations;
         this.task = task;
         this.heuristic = heuristic;
         this.successors = successors;
@@ -43,12 +50,10 @@ final class PlanImprover {
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
         shortest = false;
         int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
-        trace("agenda shortened", best);
         if (tryLazyGreedy && !expired()) {
             Landmarks lms = new Landmarks(task, init, goalPos, deadline);
-            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg);
+            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg, searchEvaluations);
             count(r);
-            trace("lazy " + r.outcome(), r.plan());
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
                 best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
             }
@@ -59,19 +64,15 @@ final class PlanImprover {
         for (int w : WEIGHTS) {
             if (shortest || expired() || best.length <= 1) break;
             BestFirstSearch.Result r = new BestFirstSearch(task, heuristic, successors, deadline).boundLength(best.length)
-                    .run(init, goalPos, goalNeg, 1, w, true, Long.MAX_VALUE);
+                    .run(init, goalPos, goalNeg, 1, w, true, searchEvaluations);
             count(r);
-            trace("wa* " + w + " " + r.outcome(), r.plan());
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
-            // exhausted under the bound: no shorter plan exists for any weight
+            // exhausted under the bound: no shorter plan exists for any weight (a limit says nothing)
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
         }
+        // restarts that stopped at their evaluation limit leave time to larger neighbourhoods
+        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, deadline);
         return best;
-    }
-
-    static final boolean TRACE = System.getenv("TRIAD_TRACE") != null;
-    static void trace(String what, int[] plan) {
-        if (TRACE) System.err.printf("%d %s %d%n", System.nanoTime() / 1000000, what, plan == null ? -1 : plan.length);
     }
 
     private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
@@ -80,11 +81,13 @@ final class PlanImprover {
 
     private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until) {
         if (expired()) return plan;
-        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(successors, NEIGHBOURHOOD_STATES, until);
-        plan = pngs.improve(init, goalPos, goalNeg, plan);
-        trace("pngs", plan);
+        if (neighbourhood == null) {
+            int states = Math.min(NEIGHBOURHOOD_STATES, NEIGHBOURHOOD_FACTS / (init.length + 1));
+            neighbourhood = new PlanNeighbourhoodSearch(successors, Math.max(1, states));
+        }
+        plan = neighbourhood.improve(init, goalPos, goalNeg, plan, until);
         // the neighbourhood was the whole reachable space: nothing shorter exists
-        shortest |= pngs.provedShortest();
+        shortest |= neighbourhood.provedShortest();
         return plan;
     }
 

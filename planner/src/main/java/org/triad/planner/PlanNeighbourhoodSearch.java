@@ -14,18 +14,17 @@ final class PlanNeighbourhoodSearch {
     static final int FIRST_BOUND = 1000;
 
     private final Successors successors;
-    private final long deadline;
     private final int maxStates;
+    private long deadline;
     private boolean complete;
+    /** The neighbourhood size of the next round: a later call goes on where the last one stopped. */
+    private int bound;
 
-    /**
-     * @param maxStates the largest neighbourhood tried (memory bound)
-     * @param deadlineNanos {@link System#nanoTime()} after which the best plan so far is returned
-     */
-    PlanNeighbourhoodSearch(Successors successors, int maxStates, long deadlineNanos) {
+    /** @param maxStates the largest neighbourhood tried (memory bound) */
+    PlanNeighbourhoodSearch(Successors successors, int maxStates) {
         this.successors = successors;
         this.maxStates = maxStates;
-        this.deadline = deadlineNanos;
+        this.bound = Math.min(FIRST_BOUND, maxStates);
     }
 
     /** Whether the last {@link #improve} explored the whole reachable space (its result is then a shortest plan). */
@@ -33,10 +32,13 @@ final class PlanNeighbourhoodSearch {
         return complete;
     }
 
-    /** A plan no longer than {@code plan} (which must be valid) reaching the goal from {@code init}. */
-    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
+    /**
+     * A plan no longer than {@code plan} (which must be valid) reaching the goal from {@code init};
+     * the best so far at {@code deadlineNanos} ({@link System#nanoTime()}).
+     */
+    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long deadlineNanos) {
+        deadline = deadlineNanos;
         complete = false;
-        int bound = Math.min(FIRST_BOUND, maxStates);
         while (System.nanoTime() < deadline) {
             int[] shorter = round(init, goalPos, goalNeg, plan, bound);
             if (shorter == null) return plan; // deadline
@@ -57,27 +59,47 @@ final class PlanNeighbourhoodSearch {
         int[] fifo = new int[Math.max(16, plan.length + 1)];
         int tail = 0;
         int[] state = init;
-        if (hood.find(state) < 0) fifo = push(fifo, tail++, hood.add(state, -1, -1, 0, 0));
+        fifo = push(fifo, tail++, hood.add(state, -1, -1, 0, 0));
         for (int o : plan) {
             state = successors.apply(state, o);
             if (hood.find(state) < 0) fifo = push(fifo, tail++, hood.add(state, -1, -1, 0, 0));
         }
-        // multi-source breadth-first: every plan state's neighbourhood grows one layer at a time
+        int sources = tail;
+        // multi-source breadth-first: every plan state's neighbourhood grows one layer at a time; the
+        // edges of expanded states are kept (node i's in [edgeStart[i], edgeStart[i + 1])), and the
+        // plan's states are always expanded, so the plan's own path is among them
+        int[] edgeStart = new int[fifo.length + 1];
+        int[] edgeTo = new int[1024];
+        int[] edgeOp = new int[1024];
+        int edges = 0;
         int head = 0;
-        while (head < tail && hood.size() < bound) {
+        while (head < tail && (head < sources || hood.size() < bound)) {
             if ((head & 63) == 0 && System.nanoTime() > deadline) return null;
-            int[] s = hood.state(fifo[head++]);
+            int node = fifo[head++];
+            int[] s = hood.state(node);
             int n = successors.applicable(s);
             int[] ops = new int[n];
             for (int i = 0; i < n; i++) ops[i] = successors.get(i);
             for (int o : ops) {
                 int[] c = successors.apply(s, o);
-                if (hood.find(c) >= 0) continue;
-                fifo = push(fifo, tail++, hood.add(c, -1, -1, 0, 0));
+                int child = hood.find(c);
+                if (child < 0) {
+                    child = hood.add(c, -1, -1, 0, 0);
+                    fifo = push(fifo, tail++, child);
+                }
+                if (edges == edgeTo.length) {
+                    edgeTo = java.util.Arrays.copyOf(edgeTo, edges * 2);
+                    edgeOp = java.util.Arrays.copyOf(edgeOp, edges * 2);
+                }
+                edgeTo[edges] = child;
+                edgeOp[edges++] = o;
             }
+            if (node + 1 >= edgeStart.length) edgeStart = java.util.Arrays.copyOf(edgeStart, Math.max(edgeStart.length * 2, node + 2));
+            edgeStart[node + 1] = edges;
         }
         complete = head == tail;
-        return shortestPath(hood, init, goalPos, goalNeg);
+        // nodes were expanded in id order 0 .. head-1 (the fifo holds ids in creation order)
+        return shortestPath(hood, head, edgeStart, edgeTo, edgeOp, goalPos, goalNeg);
     }
 
     private static int[] push(int[] fifo, int at, int node) {
@@ -86,27 +108,32 @@ final class PlanNeighbourhoodSearch {
         return fifo;
     }
 
-    /** Breadth-first from the initial state over the neighbourhood's states only. */
-    private int[] shortestPath(StateSpace hood, int[] init, int[] goalPos, int[] goalNeg) {
-        StateSpace seen = new StateSpace();
-        int root = seen.add(init, -1, -1, 0, 0);
-        if (Successors.satisfies(init, goalPos, goalNeg)) return new int[0];
-        int[] fifo = new int[64];
+    /** Breadth-first from the initial state (node 0) over the kept edges. */
+    private int[] shortestPath(StateSpace hood, int expanded, int[] edgeStart, int[] edgeTo, int[] edgeOp, int[] goalPos, int[] goalNeg) {
+        int size = hood.size();
+        int[] parent = new int[size];
+        int[] via = new int[size];
+        java.util.Arrays.fill(parent, -2);
+        parent[0] = -1;
+        int[] fifo = new int[size];
         int tail = 0;
-        fifo[tail++] = root;
+        fifo[tail++] = 0;
         for (int head = 0; head < tail; head++) {
-            if ((head & 63) == 0 && System.nanoTime() > deadline) return null;
             int node = fifo[head];
-            int[] s = seen.state(node);
-            int n = successors.applicable(s);
-            int[] ops = new int[n];
-            for (int i = 0; i < n; i++) ops[i] = successors.get(i);
-            for (int o : ops) {
-                int[] c = successors.apply(s, o);
-                if (hood.find(c) < 0 || seen.find(c) >= 0) continue;
-                int child = seen.add(c, node, o, seen.g(node) + 1, 0);
-                if (Successors.satisfies(c, goalPos, goalNeg)) return seen.path(child);
-                fifo = push(fifo, tail++, child);
+            if (Successors.satisfies(hood.state(node), goalPos, goalNeg)) {
+                int len = 0;
+                for (int x = node; parent[x] >= 0; x = parent[x]) len++;
+                int[] out = new int[len];
+                for (int x = node; parent[x] >= 0; x = parent[x]) out[--len] = via[x];
+                return out;
+            }
+            if (node >= expanded) continue;
+            for (int e = edgeStart[node], end = edgeStart[node + 1]; e < end; e++) {
+                int c = edgeTo[e];
+                if (parent[c] != -2) continue;
+                parent[c] = node;
+                via[c] = edgeOp[e];
+                fifo[tail++] = c;
             }
         }
         throw new IllegalStateException("the plan's own path lies in its neighbourhood");

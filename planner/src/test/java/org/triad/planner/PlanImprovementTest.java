@@ -101,8 +101,8 @@ class PlanImprovementTest {
         int[] detour = s.ops("move a d", "move d e", "move e c");
         // no single action of the detour can go: elimination keeps it
         assertEquals(3, PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour).length);
-        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 10_000, Long.MAX_VALUE);
-        int[] better = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour);
+        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 10_000);
+        int[] better = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour, Long.MAX_VALUE);
         assertArrayEquals(s.ops("move a b", "move b c"), better);
         s.assertValid(better);
         // 5 places times 6 ball positions: the neighbourhood covers the whole space
@@ -113,8 +113,8 @@ class PlanImprovementTest {
     void neighbourhoodSearchWithATinyBoundReturnsTheGivenPlanNeverALongerOne() {
         Setup s = roadsSetup("(and (at c) (ball-at x e))");
         int[] plan = s.ops("pick x a", "move a d", "move d e", "drop x e", "move e c");
-        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 1, Long.MAX_VALUE);
-        int[] result = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan);
+        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 1);
+        int[] result = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, Long.MAX_VALUE);
         assertTrue(result.length <= plan.length);
         s.assertValid(result);
         assertFalse(pngs.provedShortest());
@@ -124,8 +124,8 @@ class PlanImprovementTest {
     void neighbourhoodSearchPastItsDeadlineKeepsThePlan() {
         Setup s = roadsSetup("(at c)");
         int[] detour = s.ops("move a d", "move d e", "move e c");
-        int[] result = new PlanNeighbourhoodSearch(s.successors(), 10_000, System.nanoTime() - 1)
-                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour);
+        int[] result = new PlanNeighbourhoodSearch(s.successors(), 10_000)
+                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour, System.nanoTime() - 1);
         assertArrayEquals(detour, result);
     }
 
@@ -152,7 +152,7 @@ class PlanImprovementTest {
         BestFirstSearch.Result first = new BestFirstSearch(t, h, succ, Long.MAX_VALUE).run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, false, Long.MAX_VALUE);
         assertNotNull(first.plan());
         long[] effort = new long[2];
-        int[] improved = new PlanImprover(t, h, succ, System.nanoTime() + Duration.ofSeconds(2).toNanos(), effort)
+        int[] improved = new PlanImprover(t, h, succ, System.nanoTime() + Duration.ofSeconds(2).toNanos(), effort, 100_000)
                 .improve(q.init(), q.goalPos(), q.goalNeg(), first.plan(), true);
         assertTrue(improved.length <= first.plan().length, improved.length + " > " + first.plan().length);
         List<PddlStep> steps = new ArrayList<>();
@@ -166,7 +166,7 @@ class PlanImprovementTest {
     void improverPastItsDeadlineStillEliminatesRedundantActions() {
         Setup s = roadsSetup("(at c)");
         int[] plan = s.ops("pick x a", "move a b", "drop x b", "move b c");
-        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), System.nanoTime() - 1, new long[2])
+        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), System.nanoTime() - 1, new long[2], 1000)
                 .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, true);
         assertArrayEquals(s.ops("move a b", "move b c"), result);
     }
