@@ -12,11 +12,15 @@ package org.triad.planner;
 final class PlanNeighbourhoodSearch {
     /** States explored around the plan in the first round. */
     static final int FIRST_BOUND = 1000;
+    /** Transitions kept per round at most (two ints each, 64 MB): wide tasks stop at fewer states. */
+    static final int MAX_EDGES = 8_000_000;
 
     private final Successors successors;
     private final int maxStates;
     private long deadline;
     private boolean complete;
+    /** The last round stopped at {@link #MAX_EDGES}: a larger bound would explore the same states. */
+    private boolean edgeLimited;
     /** The neighbourhood size of the next round: a later call goes on where the last one stopped. */
     private int bound;
 
@@ -46,7 +50,7 @@ final class PlanNeighbourhoodSearch {
             if (shorter.length < plan.length) {
                 plan = shorter;
             } else {
-                if (bound >= maxStates) return plan;
+                if (bound >= maxStates || edgeLimited) return plan;
                 bound = (int) Math.min((long) bound * 2, maxStates);
             }
         }
@@ -73,7 +77,7 @@ final class PlanNeighbourhoodSearch {
         int[] edgeOp = new int[1024];
         int edges = 0;
         int head = 0;
-        while (head < tail && (head < sources || hood.size() < bound)) {
+        while (head < tail && (head < sources || (hood.size() < bound && edges < MAX_EDGES))) {
             if ((head & 63) == 0 && System.nanoTime() > deadline) return null;
             int node = fifo[head++];
             int[] s = hood.state(node);
@@ -98,6 +102,7 @@ final class PlanNeighbourhoodSearch {
             edgeStart[node + 1] = edges;
         }
         complete = head == tail;
+        edgeLimited = edges >= MAX_EDGES;
         // nodes were expanded in id order 0 .. head-1 (the fifo holds ids in creation order)
         return shortestPath(hood, head, edgeStart, edgeTo, edgeOp, goalPos, goalNeg);
     }
