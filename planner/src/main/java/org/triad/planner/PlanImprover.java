@@ -50,6 +50,7 @@ final class PlanImprover {
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
         shortest = false;
         int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
+        int first = best.length;
         if (tryLazyGreedy && !expired()) {
             Landmarks lms = new Landmarks(task, init, goalPos, deadline);
             BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg, searchEvaluations);
@@ -58,8 +59,12 @@ final class PlanImprover {
                 best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
             }
         }
+        // the cheap steps first: where neither the lazy search nor the smallest neighbourhood helps,
+        // the first plan is likely short already and the rest of the budget is kept
+        best = neighbourhood(init, goalPos, goalNeg, best, deadline, false);
+        if (shortest || best.length == first) return best;
         // half of what is left, so that the restarts below get time when the neighbourhood stops helping
-        best = neighbourhood(init, goalPos, goalNeg, best, System.nanoTime() + (deadline - System.nanoTime()) / 2);
+        best = neighbourhood(init, goalPos, goalNeg, best, System.nanoTime() + (deadline - System.nanoTime()) / 2, true);
         if (shortest) return best;
         for (int w : WEIGHTS) {
             if (shortest || expired() || best.length <= 1) break;
@@ -71,21 +76,21 @@ final class PlanImprover {
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
         }
         // restarts that stopped at their evaluation limit leave time to larger neighbourhoods
-        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, deadline);
+        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, deadline, true);
         return best;
     }
 
     private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
-        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), deadline);
+        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), deadline, true);
     }
 
-    private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until) {
+    private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until, boolean grow) {
         if (expired()) return plan;
         if (neighbourhood == null) {
             int states = Math.min(NEIGHBOURHOOD_STATES, NEIGHBOURHOOD_FACTS / (init.length + 1));
             neighbourhood = new PlanNeighbourhoodSearch(successors, Math.max(1, states));
         }
-        plan = neighbourhood.improve(init, goalPos, goalNeg, plan, until);
+        plan = neighbourhood.improve(init, goalPos, goalNeg, plan, until, grow);
         // the neighbourhood was the whole reachable space: nothing shorter exists
         shortest |= neighbourhood.provedShortest();
         return plan;

@@ -41,6 +41,11 @@ final class PlanNeighbourhoodSearch {
      * the best so far at {@code deadlineNanos} ({@link System#nanoTime()}).
      */
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long deadlineNanos) {
+        return improve(init, goalPos, goalNeg, plan, deadlineNanos, true);
+    }
+
+    /** As {@link #improve(int[], int[], int[], int[], long)}; without {@code grow}, stops at the first round that does not help. */
+    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long deadlineNanos, boolean grow) {
         deadline = deadlineNanos;
         complete = false;
         while (System.nanoTime() < deadline) {
@@ -50,7 +55,7 @@ final class PlanNeighbourhoodSearch {
             if (shorter.length < plan.length) {
                 plan = shorter;
             } else {
-                if (bound >= maxStates || edgeLimited) return plan;
+                if (!grow || bound >= maxStates || edgeLimited) return plan;
                 bound = (int) Math.min((long) bound * 2, maxStates);
             }
         }
