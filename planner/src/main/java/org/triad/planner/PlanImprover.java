@@ -3,16 +3,20 @@ package org.triad.planner;
 /**
  * Makes a first plan shorter within a time budget, keeping the shortest valid plan found:
  * <ol>
- * <li>action elimination ({@link PlanShortener}) and plan neighbourhood graph search
- *     ({@link PlanNeighbourhoodSearch}) on the first plan;</li>
+ * <li>action elimination ({@link PlanShortener}) on the first plan;</li>
  * <li>when the first plan came from the goal agenda: LAMA's first iteration (lazy greedy search,
  *     FF and landmark count, preferred operators), which finds other plans where the agenda's
- *     goal order forces detours; its plan is post-processed the same way;</li>
- * <li>restarts of weighted A* (weights 5, 3, 2, preferred operators) that only look for plans shorter
- *     than the best so far, each result post-processed again.</li>
+ *     goal order forces detours;</li>
+ * <li>plan neighbourhood graph search ({@link PlanNeighbourhoodSearch}) with the smallest
+ *     neighbourhood; if neither this nor the lazy search shortened the plan, the first plan is
+ *     likely short already and the rest of the budget is left unused;</li>
+ * <li>otherwise growing neighbourhoods for half of the remaining time, then restarts of weighted A*
+ *     (weights 5, 3, 2, preferred operators) that only look for plans shorter than the best so far,
+ *     each result post-processed the same way, and neighbourhoods again with what is left.</li>
  * </ol>
  * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
- * extra time (apart from one step's last heuristic evaluation).
+ * extra time (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
+ * to apply actions, so they follow whatever action semantics it implements.
  */
 final class PlanImprover {
     /** Weighted A* restarts, as in LAMA's later iterations. */
