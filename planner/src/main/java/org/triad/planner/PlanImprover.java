@@ -54,6 +54,7 @@ final class PlanImprover {
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
         shortest = false;
         int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
+        if (best.length == 0) return best;
         int first = best.length;
         if (tryLazyGreedy && !expired()) {
             Landmarks lms = new Landmarks(task, init, goalPos, deadline);

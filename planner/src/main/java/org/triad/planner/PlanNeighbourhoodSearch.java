@@ -48,6 +48,7 @@ final class PlanNeighbourhoodSearch {
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long deadlineNanos, boolean grow) {
         deadline = deadlineNanos;
         complete = false;
+        if (plan.length == 0) return plan;
         while (System.nanoTime() < deadline) {
             int[] shorter = round(init, goalPos, goalNeg, plan, bound);
             if (shorter == null) return plan; // deadline

@@ -172,6 +172,20 @@ class PlanImprovementTest {
     }
 
     @Test
+    void improverKeepsAShortestFirstPlanAndAnEmptyOne() {
+        Setup s = roadsSetup("(at c)");
+        int[] shortest = s.ops("move a b", "move b c");
+        long[] effort = new long[2];
+        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE, effort, 1000)
+                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), shortest, true);
+        assertArrayEquals(shortest, result);
+        assertTrue(effort[1] > 0, "the lazy search ran");
+        Setup reached = roadsSetup("(at a)");
+        assertArrayEquals(new int[0], new PlanImprover(reached.task(), new FfHeuristic(reached.task()), reached.successors(), Long.MAX_VALUE,
+                new long[2], 1000).improve(reached.query().init(), reached.query().goalPos(), reached.query().goalNeg(), new int[0], true));
+    }
+
+    @Test
     void engineWithImprovementIsNoLongerThanWithout() {
         Domain d = TestProblems.domain("ipc/logistics00/domain.pddl");
         Problem p = TestProblems.problem("ipc/logistics00/problogistics-10-0.pddl");
