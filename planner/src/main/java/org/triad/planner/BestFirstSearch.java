@@ -18,12 +18,20 @@ final class BestFirstSearch {
     private final FfHeuristic heuristic;
     private final Successors successors;
     private final long deadline;
+    /** Successors reached by this many actions or more are not generated: only shorter plans are sought. */
+    private int lengthBound = Integer.MAX_VALUE;
 
     BestFirstSearch(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos) {
         this.task = task;
         this.heuristic = heuristic;
         this.successors = successors;
         this.deadline = deadlineNanos;
+    }
+
+    /** Makes later runs look only for plans of fewer than {@code actions} actions (anytime restarts). */
+    BestFirstSearch boundLength(int actions) {
+        lengthBound = actions;
+        return this;
     }
 
     private static long key(long f, int h) {
@@ -103,6 +111,7 @@ final class BestFirstSearch {
                 int[] child = successors.apply(state, o);
                 int existing = space.find(child);
                 int cg = g + 1;
+                if (cg >= lengthBound) continue;
                 if (existing >= 0) {
                     if (astar && cg < space.g(existing) && space.h(existing) != FfHeuristic.INFINITE) {
                         space.reparent(existing, node, o, cg);

@@ -40,6 +40,11 @@ final class LazyGreedySearch {
     }
 
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg) {
+        return run(init, goalPos, goalNeg, Long.MAX_VALUE);
+    }
+
+    /** Stops with {@code LIMIT} after {@code evaluationLimit} heuristic evaluations. */
+    BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg, long evaluationLimit) {
         StateSpace space = new StateSpace();
         int nq = landmarks == null ? 2 : 3;
         LongHeap[] queues = new LongHeap[nq];
@@ -60,6 +65,9 @@ final class LazyGreedySearch {
             priority[qi]++;
             if ((evaluated & 7) == 0 && System.nanoTime() > deadline) {
                 return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
+            }
+            if (evaluated >= evaluationLimit) {
+                return new BestFirstSearch.Result(BestFirstSearch.Outcome.LIMIT, null, null, expanded, evaluated);
             }
             int e = queues[qi].pop();
             int parent = entryParent[e];

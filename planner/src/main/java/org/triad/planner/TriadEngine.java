@@ -28,7 +28,11 @@ import org.triad.planner.pddl.Problem;
  *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
  *     exhausting it proves the problem unsolvable);</li>
  * </ol>
- * and finally removes redundant actions from the plan. Grounding is not interruptible: the timeout
+ * and finally makes the plan shorter: an exact search's plan only loses redundant actions; any
+ * other plan goes to {@link PlanImprover} (action elimination, the lazy search when the agenda found
+ * the plan, plan neighbourhood graph search, length-bounded weighted A* restarts) for at most twice
+ * the time the first plan took (grounding included), plus 20 ms for several goals, never beyond the
+ * improvement cap (10 s by default) or the timeout. Grounding is not interruptible: the timeout
  * applies to search.
  */
 public final class TriadEngine implements PddlPlanner {
@@ -47,14 +51,44 @@ public final class TriadEngine implements PddlPlanner {
      */
     static final long GRAPH_SEARCH_WORK = 300_000;
 
+    /** Default cap on the time spent making a first plan shorter ({@link PlanImprover}). */
+    public static final Duration IMPROVEMENT_CAP = Duration.ofSeconds(10);
+    /**
+     * Time granted to improving a plan of several goals, besides the time to the first plan (its
+     * grounding and search): enough for the lazy search and a few rounds of neighbourhood search on
+     * small tasks, while a planner embedded in a robot stays within a small factor of the first plan.
+     */
+    static final long IMPROVEMENT_EXTRA_NANOS = 20_000_000L;
+
+    /** Improving may take this many times the time to the first plan (grounding included). */
+    static final long IMPROVEMENT_TIME_FACTOR = 2;
+    /**
+     * Each improving search (the lazy one, every restart) may evaluate this many times the states the
+     * first plan needed, at least {@link #IMPROVEMENT_MIN_EVALUATIONS}: one that needs far more rarely
+     * pays off, and a failed one leaves time to the next.
+     */
+    static final long IMPROVEMENT_EVALUATION_FACTOR = 5;
+    static final long IMPROVEMENT_MIN_EVALUATIONS = 1000;
+
     private final GroundedProblemCache cache;
+    private final long improvementCapNanos;
 
     public TriadEngine() {
         this(new GroundedProblemCache(8));
     }
 
     public TriadEngine(GroundedProblemCache cache) {
+        this(cache, IMPROVEMENT_CAP);
+    }
+
+    /**
+     * @param improvementCap the most time spent after the first plan looking for a shorter one (on
+     *     top of the first plan's time, it is at most twice that time plus 20 ms; zero keeps the first
+     *     plan after removing redundant actions)
+     */
+    public TriadEngine(GroundedProblemCache cache, Duration improvementCap) {
         this.cache = cache;
+        this.improvementCapNanos = improvementCap.toNanos();
     }
 
     public GroundedProblemCache cache() {
@@ -98,10 +132,13 @@ public final class TriadEngine implements PddlPlanner {
         long[] effort = new long[2];
         int[] plan = null;
 
+        boolean exact = false;
+        boolean fromAgenda = false;
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
         if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
             plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
+            exact = true;
             if (plan == null) return SolveResult.unsolvable("goal unreachable in the transition graph", stats(groundMs, searchStart, effort));
         } else if (open.size() <= 1) {
             boolean tryAstar = true;
@@ -110,7 +147,10 @@ public final class TriadEngine implements PddlPlanner {
                         .run(q.init(), q.goalPos(), q.goalNeg());
                 effort[0] += r.expanded();
                 effort[1] += r.generated();
-                if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
+                if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
+                    plan = r.plan();
+                    exact = true;
+                }
                 if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
                     return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
                 }
@@ -129,6 +169,7 @@ public final class TriadEngine implements PddlPlanner {
             // the agenda may use a tenth of the time; the complete search gets the rest
             long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
             plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), h, open, effort);
+            fromAgenda = plan != null;
         }
         if (plan == null && System.nanoTime() < deadline) {
             Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
@@ -141,7 +182,18 @@ public final class TriadEngine implements PddlPlanner {
             }
         }
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
-        plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        if (exact || improvementCapNanos <= 0) {
+            plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
+        } else {
+            long now = System.nanoTime();
+            long firstPlan = now - searchStart + (long) (groundMs * 1e6);
+            // a single goal's A* plan is near shortest: no extra time, so small goals stay fast
+            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_NANOS;
+            long budget = Math.min(improvementCapNanos, IMPROVEMENT_TIME_FACTOR * firstPlan + extra);
+            long until = Math.min(deadline, now + budget);
+            long evaluations = Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]);
+            plan = new PlanImprover(task, h, succ, until, effort, evaluations).improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
+        }
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));

@@ -16,15 +16,24 @@ import org.triad.planner.pddl.Problem;
  * as a whole process ({@code java ... SolveOnce} and {@code fast-downward.py --alias lama-first}),
  * one run each with a time cap, every plan replayed by {@link PlanValidator} on the lifted domain.
  * Prints a Markdown table. Reads only local files:
- * {@code FastDownwardComparison FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR DOMAIN_FOLDER/PROBLEM.pddl...}
- * (the domain file is found as Fast Downward's driver finds it). See planner/BENCHMARK.md.
+ * {@code FastDownwardComparison [--fd-cache DIR] FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR DOMAIN_FOLDER/PROBLEM.pddl...}
+ * (the domain file is found as Fast Downward's driver finds it). With {@code --fd-cache}, Fast
+ * Downward runs once per problem: its plan and wall seconds are kept as {@code DIR/FOLDER/PROBLEM.pddl.plan}
+ * and {@code .seconds} ("timeout" when it found none) and reused by later runs. The last line gives
+ * the median length ratio over the problems both solved. See planner/BENCHMARK.md.
  */
 public final class FastDownwardComparison {
     public static void main(String[] args) throws Exception {
+        Path fdCache = null;
+        if (args.length > 1 && args[0].equals("--fd-cache")) {
+            fdCache = Path.of(args[1]).toAbsolutePath();
+            args = java.util.Arrays.copyOfRange(args, 2, args.length);
+        }
         if (args.length < 4) {
-            System.err.println("usage: FastDownwardComparison FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR FOLDER/PROBLEM.pddl...");
+            System.err.println("usage: FastDownwardComparison [--fd-cache DIR] FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR FOLDER/PROBLEM.pddl...");
             System.exit(2);
         }
+        List<Double> ratios = new ArrayList<>();
         String fd = args[0];
         double timeout = Double.parseDouble(args[1]);
         Path root = Path.of(args[2]).toAbsolutePath();
@@ -47,12 +56,34 @@ public final class FastDownwardComparison {
                     .split(java.io.File.pathSeparator)).map(e -> Path.of(e).toAbsolutePath().toString()).toList());
             double triadS = run(work, timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
                     SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout)));
-            double fdS = run(work, timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
-                    "--plan-file", fdPlan.toString(), domainFile.toString(), problemFile.toString()));
+            Path cachedPlan = fdCache == null ? null : fdCache.resolve(args[i] + ".plan");
+            Path cachedSeconds = fdCache == null ? null : fdCache.resolve(args[i] + ".seconds");
+            double fdS;
+            if (cachedSeconds != null && Files.exists(cachedSeconds)) {
+                String text = Files.readString(cachedSeconds).trim();
+                fdS = text.equals("timeout") ? Double.NaN : Double.parseDouble(text);
+                if (Files.exists(cachedPlan)) Files.copy(cachedPlan, fdPlan);
+            } else {
+                fdS = run(work, timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
+                        "--plan-file", fdPlan.toString(), domainFile.toString(), problemFile.toString()));
+                if (cachedSeconds != null) {
+                    Files.createDirectories(cachedSeconds.getParent());
+                    if (Files.exists(fdPlan)) Files.copy(fdPlan, cachedPlan, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                    Files.writeString(cachedSeconds, Files.exists(fdPlan) && !Double.isNaN(fdS) ? Double.toString(fdS) : "timeout");
+                }
+            }
             String[] t = check(domain, problem, triadPlan);
             String[] f = check(domain, problem, fdPlan);
             String ratio = t[0].equals("-") || f[0].equals("-") ? "-" : String.format("%.2f", Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
+            if (!ratio.equals("-")) ratios.add(Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
             System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio);
+        }
+        java.util.Collections.sort(ratios);
+        if (!ratios.isEmpty()) {
+            int n = ratios.size();
+            double median = n % 2 == 1 ? ratios.get(n / 2) : (ratios.get(n / 2 - 1) + ratios.get(n / 2)) / 2;
+            long above = ratios.stream().filter(r -> r > 1.1 + 1e-9).count();
+            System.out.printf("%nmedian length ratio %.2f over %d problems both solved; %d above 1.1%n", median, n, above);
         }
     }
 

@@ -1,0 +1,116 @@
+package org.triad.planner;
+
+/**
+ * Makes a first plan shorter within a time budget, keeping the shortest valid plan found:
+ * <ol>
+ * <li>action elimination ({@link PlanShortener}) on the first plan;</li>
+ * <li>when the first plan came from the goal agenda: LAMA's first iteration (lazy greedy search,
+ *     FF and landmark count, preferred operators), which finds other plans where the agenda's
+ *     goal order forces detours;</li>
+ * <li>plan neighbourhood graph search ({@link PlanNeighbourhoodSearch}) with the smallest
+ *     neighbourhood; if neither this nor the lazy search shortened the plan, the first plan is
+ *     likely short already and the rest of the budget is left unused;</li>
+ * <li>otherwise growing neighbourhoods for half of the remaining time, then restarts of weighted A*
+ *     (weights 5, 3, 2, preferred operators) that only look for plans shorter than the best so far,
+ *     each result post-processed the same way, and neighbourhoods again with what is left.</li>
+ * </ol>
+ * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
+ * extra time (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
+ * to apply actions, so they follow whatever action semantics it implements.
+ */
+final class PlanImprover {
+    /** Weighted A* restarts, as in LAMA's later iterations. */
+    static final int[] WEIGHTS = {5, 3, 2};
+    /** Largest plan neighbourhood explored (states) ... */
+    static final int NEIGHBOURHOOD_STATES = 200_000;
+    /** ... and at most this many facts stored in its states, a memory bound of about 64 MB. */
+    static final int NEIGHBOURHOOD_FACTS = 16_000_000;
+
+    private final SearchTask task;
+    private final FfHeuristic heuristic;
+    private final Successors successors;
+    private final long deadline;
+    private final long[] effort;
+    private final long searchEvaluations;
+    private boolean shortest;
+    private PlanNeighbourhoodSearch neighbourhood;
+
+    /**
+     * @param deadlineNanos {@link System#nanoTime()} when improving stops
+     * @param effort expanded and evaluated counters to add to
+     * @param searchEvaluations heuristic evaluations allowed to each search (the lazy one and every
+     *     restart): where a search needs many more than the first plan did, it rarely pays off
+     */
+    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations) {
+        this.searchEvaluations = searchEvaluations;
+        this.task = task;
+        this.heuristic = heuristic;
+        this.successors = successors;
+        this.deadline = deadlineNanos;
+        this.effort = effort;
+    }
+
+    /** The shortest plan found, never longer than {@code plan} (a valid plan for the goal). */
+    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
+        shortest = false;
+        int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
+        if (best.length == 0) return best;
+        int first = best.length;
+        if (tryLazyGreedy && !expired()) {
+            Landmarks lms = new Landmarks(task, init, goalPos, deadline);
+            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg, searchEvaluations);
+            count(r);
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
+                best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
+            }
+        }
+        // the cheap steps first: where neither the lazy search nor the smallest neighbourhood helps,
+        // the first plan is likely short already and the rest of the budget is kept
+        best = neighbourhood(init, goalPos, goalNeg, best, deadline, false);
+        if (shortest || best.length == first) return best;
+        // half of what is left, so that the restarts below get time when the neighbourhood stops helping
+        best = neighbourhood(init, goalPos, goalNeg, best, System.nanoTime() + (deadline - System.nanoTime()) / 2, true);
+        if (shortest) return best;
+        for (int w : WEIGHTS) {
+            if (shortest || expired() || best.length <= 1) break;
+            BestFirstSearch.Result r = new BestFirstSearch(task, heuristic, successors, deadline).boundLength(best.length)
+                    .run(init, goalPos, goalNeg, 1, w, true, searchEvaluations);
+            count(r);
+            if (r.outcome() == BestFirstSearch.Outcome.FOUND) best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
+            // exhausted under the bound: no shorter plan exists for any weight (a limit says nothing)
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
+        }
+        // restarts that stopped at their evaluation limit leave time to larger neighbourhoods
+        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, deadline, true);
+        return best;
+    }
+
+    private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
+        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), deadline, true);
+    }
+
+    private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until, boolean grow) {
+        if (expired()) return plan;
+        if (neighbourhood == null) {
+            int states = Math.min(NEIGHBOURHOOD_STATES, NEIGHBOURHOOD_FACTS / (init.length + 1));
+            neighbourhood = new PlanNeighbourhoodSearch(successors, Math.max(1, states));
+        }
+        plan = neighbourhood.improve(init, goalPos, goalNeg, plan, until, grow);
+        // the neighbourhood was the whole reachable space: nothing shorter exists
+        shortest |= neighbourhood.provedShortest();
+        return plan;
+    }
+
+    private void count(BestFirstSearch.Result r) {
+        effort[0] += r.expanded();
+        effort[1] += r.evaluated();
+    }
+
+    private boolean expired() {
+        return System.nanoTime() >= deadline;
+    }
+
+    private static int[] shorter(int[] a, int[] b) {
+        return b.length < a.length ? b : a;
+    }
+}

@@ -1,0 +1,198 @@
+package org.triad.planner;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+
+/** Action elimination, plan neighbourhood graph search, length-bounded restarts and the improver that runs them. */
+class PlanImprovementTest {
+    /** A robot on a road map, with a ball it may carry: two ways from a to c, the one by b shorter. */
+    private static final Domain ROADS = PddlParser.parseDomain("""
+            (define (domain roads) (:requirements :strips :typing) (:types place ball)
+              (:predicates (at ?p - place) (road ?a ?b - place) (ball-at ?x - ball ?p - place) (holding ?x - ball) (free))
+              (:action move :parameters (?a ?b - place) :precondition (and (at ?a) (road ?a ?b)) :effect (and (at ?b) (not (at ?a))))
+              (:action pick :parameters (?x - ball ?p - place) :precondition (and (at ?p) (ball-at ?x ?p) (free))
+                 :effect (and (holding ?x) (not (ball-at ?x ?p)) (not (free))))
+              (:action drop :parameters (?x - ball ?p - place) :precondition (and (at ?p) (holding ?x))
+                 :effect (and (ball-at ?x ?p) (free) (not (holding ?x)))))
+            """, "roads.pddl");
+
+    private static Problem roads(String goal) {
+        return PddlParser.parseProblem("""
+                (define (problem trip) (:domain roads) (:objects a b c d e - place x - ball)
+                  (:init (at a) (ball-at x a) (free)
+                         (road a b) (road b a) (road b c) (road c b) (road a d) (road d a) (road d e) (road e d) (road e c) (road c e))
+                  (:goal %s))
+                """.formatted(goal), "trip.pddl");
+    }
+
+    private record Setup(Problem problem, GroundedProblem.Query query, SearchTask task, Successors successors) {
+        int[] ops(String... steps) {
+            int[] out = new int[steps.length];
+            for (int i = 0; i < steps.length; i++) out[i] = op(steps[i]);
+            return out;
+        }
+
+        int op(String step) {
+            for (int o = 0; o < task.ops.length; o++) {
+                GroundOp g = task.ops[o];
+                if ((g.name() + " " + String.join(" ", g.args())).equals(step)) return o;
+            }
+            throw new AssertionError("no ground action " + step);
+        }
+
+        /** Replays the plan on the ground task and on the lifted domain ({@link PlanValidator}). */
+        void assertValid(int[] plan) {
+            int[] state = query.init();
+            for (int o : plan) {
+                assertTrue(successors.isApplicable(state, o), task.ops[o].name() + " inapplicable");
+                state = successors.apply(state, o);
+            }
+            assertTrue(Successors.satisfies(state, query.goalPos(), query.goalNeg()), "goal not reached");
+            List<PddlStep> steps = new ArrayList<>();
+            for (int o : plan) steps.add(task.ops[o].toAction());
+            PlanValidator.Report r = PlanValidator.validate(ROADS, problem, new PddlPlan(steps));
+            assertTrue(r.valid(), r.message());
+        }
+
+    }
+
+    private static Setup setup(Domain domain, Problem problem) {
+        GroundedProblem.Query q = new GroundedProblemCache(1).get(domain, problem).query(problem);
+        return new Setup(problem, q, q.task(), new Successors(q.task()));
+    }
+
+    private static Setup roadsSetup(String goal) {
+        return setup(ROADS, roads(goal));
+    }
+
+    @Test
+    void actionEliminationRemovesARedundantPairAndKeepsTheRestValid() {
+        Setup s = roadsSetup("(at c)");
+        // picking the ball up and dropping it elsewhere changes the state (no cycle) but not the goal
+        int[] plan = s.ops("pick x a", "move a b", "drop x b", "move b c");
+        s.assertValid(plan);
+        int[] shorter = PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan);
+        assertArrayEquals(s.ops("move a b", "move b c"), shorter);
+        s.assertValid(shorter);
+    }
+
+    @Test
+    void actionEliminationKeepsAPairTheGoalNeeds() {
+        Setup s = roadsSetup("(and (at c) (ball-at x b))");
+        int[] plan = s.ops("pick x a", "move a b", "drop x b", "move b c");
+        int[] shorter = PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan);
+        assertArrayEquals(plan, shorter);
+    }
+
+    @Test
+    void neighbourhoodSearchFindsTheShorterWayThatEliminationCannot() {
+        Setup s = roadsSetup("(at c)");
+        int[] detour = s.ops("move a d", "move d e", "move e c");
+        // no single action of the detour can go: elimination keeps it
+        assertEquals(3, PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour).length);
+        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 10_000);
+        int[] better = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour, Long.MAX_VALUE);
+        assertArrayEquals(s.ops("move a b", "move b c"), better);
+        s.assertValid(better);
+        // 5 places times 6 ball positions: the neighbourhood covers the whole space
+        assertTrue(pngs.provedShortest());
+    }
+
+    @Test
+    void neighbourhoodSearchWithATinyBoundReturnsTheGivenPlanNeverALongerOne() {
+        Setup s = roadsSetup("(and (at c) (ball-at x e))");
+        int[] plan = s.ops("pick x a", "move a d", "move d e", "drop x e", "move e c");
+        PlanNeighbourhoodSearch pngs = new PlanNeighbourhoodSearch(s.successors(), 1);
+        int[] result = pngs.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, Long.MAX_VALUE);
+        assertTrue(result.length <= plan.length);
+        s.assertValid(result);
+        assertFalse(pngs.provedShortest());
+    }
+
+    @Test
+    void neighbourhoodSearchPastItsDeadlineKeepsThePlan() {
+        Setup s = roadsSetup("(at c)");
+        int[] detour = s.ops("move a d", "move d e", "move e c");
+        int[] result = new PlanNeighbourhoodSearch(s.successors(), 10_000)
+                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), detour, System.nanoTime() - 1);
+        assertArrayEquals(detour, result);
+    }
+
+    @Test
+    void aLengthBoundedSearchFindsOnlyShorterPlans() {
+        Setup s = roadsSetup("(at c)");
+        BestFirstSearch.Result none = new BestFirstSearch(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE).boundLength(2)
+                .run(s.query().init(), s.query().goalPos(), s.query().goalNeg(), 1, 5, true, Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.EXHAUSTED, none.outcome());
+        BestFirstSearch.Result found = new BestFirstSearch(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE).boundLength(3)
+                .run(s.query().init(), s.query().goalPos(), s.query().goalNeg(), 1, 5, true, Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.FOUND, found.outcome());
+        assertEquals(2, found.plan().length);
+    }
+
+    @Test
+    void improverReturnsAValidPlanNoLongerThanAGreedyFirstPlan() {
+        Domain d = TestProblems.domain("ipc/logistics00/domain.pddl");
+        Problem p = TestProblems.problem("ipc/logistics00/problogistics-10-0.pddl");
+        GroundedProblem.Query q = new GroundedProblemCache(1).get(d, p).query(p);
+        SearchTask t = q.task();
+        Successors succ = new Successors(t);
+        FfHeuristic h = new FfHeuristic(t);
+        BestFirstSearch.Result first = new BestFirstSearch(t, h, succ, Long.MAX_VALUE).run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, false, Long.MAX_VALUE);
+        assertNotNull(first.plan());
+        long[] effort = new long[2];
+        int[] improved = new PlanImprover(t, h, succ, System.nanoTime() + Duration.ofSeconds(2).toNanos(), effort, 100_000)
+                .improve(q.init(), q.goalPos(), q.goalNeg(), first.plan(), true);
+        assertTrue(improved.length <= first.plan().length, improved.length + " > " + first.plan().length);
+        List<PddlStep> steps = new ArrayList<>();
+        for (int o : improved) steps.add(t.ops[o].toAction());
+        PlanValidator.Report r = PlanValidator.validate(d, p, new PddlPlan(steps));
+        assertTrue(r.valid(), r.message());
+        assertTrue(effort[1] > 0, "the lazy search and the restarts count their evaluations");
+    }
+
+    @Test
+    void improverPastItsDeadlineStillEliminatesRedundantActions() {
+        Setup s = roadsSetup("(at c)");
+        int[] plan = s.ops("pick x a", "move a b", "drop x b", "move b c");
+        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), System.nanoTime() - 1, new long[2], 1000)
+                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, true);
+        assertArrayEquals(s.ops("move a b", "move b c"), result);
+    }
+
+    @Test
+    void improverKeepsAShortestFirstPlanAndAnEmptyOne() {
+        Setup s = roadsSetup("(at c)");
+        int[] shortest = s.ops("move a b", "move b c");
+        long[] effort = new long[2];
+        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE, effort, 1000)
+                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), shortest, true);
+        assertArrayEquals(shortest, result);
+        assertTrue(effort[1] > 0, "the lazy search ran");
+        Setup reached = roadsSetup("(at a)");
+        assertArrayEquals(new int[0], new PlanImprover(reached.task(), new FfHeuristic(reached.task()), reached.successors(), Long.MAX_VALUE,
+                new long[2], 1000).improve(reached.query().init(), reached.query().goalPos(), reached.query().goalNeg(), new int[0], true));
+    }
+
+    @Test
+    void engineWithImprovementIsNoLongerThanWithout() {
+        Domain d = TestProblems.domain("ipc/logistics00/domain.pddl");
+        Problem p = TestProblems.problem("ipc/logistics00/problogistics-10-0.pddl");
+        SolveResult plain = new TriadEngine(new GroundedProblemCache(1), Duration.ZERO).solve(d, p, Duration.ofSeconds(30));
+        SolveResult improved = new TriadEngine(new GroundedProblemCache(1), Duration.ofSeconds(2)).solve(d, p, Duration.ofSeconds(30));
+        assertTrue(plain.isSolved() && improved.isSolved());
+        assertTrue(improved.plan().length() <= plain.plan().length(), improved.plan().length() + " > " + plain.plan().length());
+        assertTrue(PlanValidator.validate(d, p, improved.plan()).valid());
+    }
+}
