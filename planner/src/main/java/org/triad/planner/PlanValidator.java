@@ -16,7 +16,9 @@ import org.triad.planner.pddl.TypedName;
 
 /**
  * Replays a plan on the lifted domain (independently of the grounder): checks each step's action,
- * argument types and precondition, applies deletes then adds, and checks the goal at the end.
+ * argument types and precondition (any ADL formula), collects the effects whose {@code when}
+ * conditions hold in the state before the step, applies all deletes then all adds, and checks the
+ * goal at the end.
  */
 public final class PlanValidator {
     private PlanValidator() { }
@@ -134,6 +136,9 @@ public final class PlanValidator {
                 else if (e instanceof PddlEffect.Delete d) dels.add(ground(d.atom(), b));
                 else if (e instanceof PddlEffect.Forall q) {
                     for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels);
+                } else if (e instanceof PddlEffect.When w) {
+                    // the state is still the one before the action: all effects are collected before any applies
+                    if (explainFalse(w.condition(), b) == null) effects(w.body(), b, adds, dels);
                 }
             }
         }

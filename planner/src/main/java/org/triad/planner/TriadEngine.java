@@ -143,7 +143,7 @@ public final class TriadEngine implements PddlPlanner {
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
         plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
         List<PddlStep> steps = new ArrayList<>(plan.length);
-        for (int o : plan) steps.add(task.ops[o].toAction());
+        for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
     }
 

@@ -10,7 +10,8 @@ import java.util.Set;
 
 /**
  * Parses PDDL domains and problems (STRIPS, typing incl. {@code either}, negative preconditions,
- * equality, disjunctive/quantified preconditions, unconditional {@code forall} effects, action costs).
+ * equality, disjunctive/quantified preconditions and goals, {@code forall} and conditional
+ * ({@code when}) effects, action costs: PDDL's ADL subset).
  * Every syntax error is a {@link PddlParseException} with {@code line:col}.
  */
 public final class PddlParser {
@@ -106,7 +107,7 @@ public final class PddlParser {
         return new Domain(name, reqs, types, constants, preds, functions, actions);
     }
 
-    /** Requirements the parser and engine handle; {@code :adl} and {@code :conditional-effects} are read, {@code when} itself is checked where it occurs. */
+    /** Requirements the parser and engine handle. */
     static final Set<String> SUPPORTED_REQUIREMENTS = Set.of(":strips", ":typing", ":negative-preconditions",
             ":disjunctive-preconditions", ":equality", ":existential-preconditions", ":universal-preconditions",
             ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs");
@@ -172,6 +173,10 @@ public final class PddlParser {
             if (e instanceof PddlEffect.Add a) out.add(a.atom());
             else if (e instanceof PddlEffect.Delete d) out.add(d.atom());
             else if (e instanceof PddlEffect.Forall q) collectEffectAtoms(q.body(), out);
+            else if (e instanceof PddlEffect.When w) {
+                collectAtoms(w.condition(), out);
+                collectEffectAtoms(w.body(), out);
+            }
         }
     }
 
@@ -262,6 +267,10 @@ public final class PddlParser {
             if (e instanceof PddlEffect.Add a) a.atom().args().forEach(x -> checkVar(x, bound, at, action));
             else if (e instanceof PddlEffect.Delete d) d.atom().args().forEach(x -> checkVar(x, bound, at, action));
             else if (e instanceof PddlEffect.Forall q) collectEffectAtomsBound(q.body(), extend(bound, q.variables()), at, action);
+            else if (e instanceof PddlEffect.When w) {
+                checkVariables(w.condition(), bound, at, action);
+                collectEffectAtomsBound(w.body(), bound, at, action);
+            }
         }
     }
 
@@ -341,8 +350,15 @@ public final class PddlParser {
                 List<TypedName> vars = typedList(list(args.get(0), "a variable list"), "object", true);
                 return List.of(new PddlEffect.Forall(vars, effect(args.get(1))));
             }
-            case "when":
-                throw err(e, "conditional effects ('when') are not supported");
+            case "when": {
+                if (args.size() != 2) throw err(e, "'when' takes a condition and an effect");
+                Formula condition = args.get(0).isList() && args.get(0).items.isEmpty() ? new Formula.And(List.of()) : formula(args.get(0));
+                List<PddlEffect> body = effect(args.get(1));
+                for (PddlEffect b : body) {
+                    if (b instanceof PddlEffect.Increase) throw err(args.get(1), "'increase' inside 'when' is not supported (action costs must not depend on the state)");
+                }
+                return List.of(new PddlEffect.When(condition, body));
+            }
             case "increase": {
                 if (args.size() != 2) throw err(e, "'increase' takes a function and an amount");
                 List<SExpr> f = list(args.get(0), "a function term such as (total-cost)");

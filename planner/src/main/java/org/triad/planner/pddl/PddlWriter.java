@@ -109,6 +109,7 @@ public final class PddlWriter {
         if (e instanceof PddlEffect.Add a) return atom(a.atom());
         if (e instanceof PddlEffect.Delete d) return "(not " + atom(d.atom()) + ")";
         if (e instanceof PddlEffect.Forall q) return "(forall (" + typed(q.variables()) + ") " + effects(q.body()) + ")";
+        if (e instanceof PddlEffect.When w) return "(when " + formula(w.condition()) + " " + effects(w.body()) + ")";
         PddlEffect.Increase i = (PddlEffect.Increase) e;
         return "(increase (" + i.function() + ") " + numeric(i.amount()) + ")";
     }
