@@ -127,7 +127,7 @@ class PddlParserTest {
                 (define (domain x) (:predicates (p) (q))
                   (:action a :parameters () :precondition (and (q) (when (p) (q)))
                     :effect (q)))""");
-        assertEquals("bad.pddl:2:53: 'when' is an effect, not a formula", e.getMessage());
+        assertEquals("bad.pddl:2:52: 'when' is an effect, not a formula", e.getMessage());
         e = domainError("""
                 (define (domain x) (:predicates (p) (q))
                   (:action a :parameters () :precondition ()
