@@ -36,7 +36,7 @@ final class FfHeuristic {
 
     FfHeuristic(SearchTask task) {
         this.t = task.relaxed;
-        int nf = task.numFacts;
+        int nf = t.size;
         int no = t.count;
         counted = new int[task.ops.length];
         helpfulMark = new int[task.ops.length];
@@ -89,6 +89,14 @@ final class FfHeuristic {
             level[f] = 0;
             supporter[f] = -1;
             queue[tail++] = f;
+        }
+        for (int k = 0; k < t.negFacts.length; k++) {
+            if (factEpoch[t.negFacts[k]] == epoch) continue;
+            int c = t.numFacts + k;
+            factEpoch[c] = epoch;
+            level[c] = 0;
+            supporter[c] = -1;
+            queue[tail++] = c;
         }
         int missing = 0;
         for (int g : goals) if (factEpoch[g] != epoch) missing++;
@@ -200,6 +208,13 @@ final class FfHeuristic {
                 found = f;
                 foundLevel = 0;
             }
+        }
+        for (int k = 0; k < t.negFacts.length; k++) {
+            if (factEpoch[t.negFacts[k]] == epoch) continue;
+            int c = t.numFacts + k;
+            factEpoch[c] = epoch;
+            level[c] = 0;
+            queue[tail++] = c;
         }
         for (int o : t.noPre) {
             for (int a : t.add[o]) {

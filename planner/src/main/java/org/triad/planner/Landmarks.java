@@ -24,7 +24,8 @@ final class Landmarks {
     Landmarks(SearchTask task, int[] init, int[] goalPos, long deadline) {
         // over the relaxed operators: a conditional achiever needs its condition too
         RelaxedOps t = task.relaxed;
-        int nf = task.numFacts;
+        int nf = t.size;
+        int[] relaxedInit = t.initial(init);
         int[][] addOf = invert(t.add, nf);
         lmOfFact = new int[nf];
         Arrays.fill(lmOfFact, -1);
@@ -42,7 +43,7 @@ final class Landmarks {
             if (inInit[l]) continue;
             boolean[] excluded = new boolean[t.count];
             for (int o : addOf[l]) excluded[o] = true;
-            relaxedReach(t, init, excluded, reach, unsat, fifo);
+            relaxedReach(t, relaxedInit, excluded, reach, unsat, fifo);
             int[] shared = null;
             for (int o : addOf[l]) {
                 boolean possible = true;
@@ -53,6 +54,7 @@ final class Landmarks {
             if (shared == null) continue;
             int lmL = lmOfFact[l];
             for (int p : shared) {
+                if (p >= task.numFacts) continue; // a complement: never in a state, so never accepted
                 boolean fresh = lmOfFact[p] < 0;
                 int lp = add(p, facts, kids);
                 if (!kids.get(lp).contains(lmL)) kids.get(lp).add(lmL);

@@ -35,10 +35,11 @@ final class ReachabilityExplainer {
     /** Fluent facts reachable from {@code init} ignoring deletes, over the grounded actions. */
     static boolean[] relaxedReach(SearchTask task, int[] init) {
         RelaxedOps t = task.relaxed;
-        boolean[] reach = new boolean[task.numFacts];
+        boolean[] reach = new boolean[t.size];
         int[] unsat = new int[t.count];
         for (int o = 0; o < unsat.length; o++) unsat[o] = t.pre[o].length;
-        int[] fifo = new int[task.numFacts];
+        int[] fifo = new int[t.size];
+        init = t.initial(init);
         int tail = 0;
         for (int f : init) if (!reach[f]) { reach[f] = true; fifo[tail++] = f; }
         for (int o : t.noPre) for (int a : t.add[o]) if (!reach[a]) { reach[a] = true; fifo[tail++] = a; }

@@ -196,4 +196,20 @@ class AdlSemanticsTest {
         assertFalse(q.task().hasConditionalEffects, "wired is static: the effect on r1 is unconditional, on r2 absent");
         assertEquals(1, TriadEngineTest.solveAndValidate(d, p).plan().length());
     }
+
+    @Test
+    void relaxedPlanPaysForMakingAFactFalseAndCountsAnOperatorOnce() {
+        Domain d = domain("""
+                (define (domain door) (:requirements :adl)
+                  (:predicates (open) (locked) (a) (b) (c))
+                  (:action close :parameters () :precondition (open) :effect (not (open)))
+                  (:action lock :parameters () :precondition (not (open)) :effect (locked))
+                  (:action both :parameters () :effect (and (c) (when (c) (a)) (when (c) (b)))))""");
+        Problem p = problem("(define (problem q) (:domain door) (:init (open) (c)) (:goal (and (locked) (a) (b))))");
+        GroundedProblem.Query q = new GroundedProblem(d, p).query(p);
+        FfHeuristic h = new FfHeuristic(q.task());
+        // close, lock, and one application of both (for a and b)
+        assertEquals(3, h.evaluate(q.init(), q.goalPos()));
+        assertEquals(3, TriadEngineTest.solveAndValidate(d, p).plan().length());
+    }
 }
