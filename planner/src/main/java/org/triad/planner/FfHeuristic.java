@@ -165,7 +165,7 @@ final class FfHeuristic {
             if (opMark[o] == epoch) continue;
             opMark[o] = epoch;
             int taskOp = t.op[o];
-            if (counted[taskOp] != epoch) {
+            if (taskOp >= 0 && counted[taskOp] != epoch) {
                 counted[taskOp] = epoch;
                 h++;
             }
@@ -179,7 +179,7 @@ final class FfHeuristic {
                     }
                 }
             }
-            if (applicable && helpfulMark[taskOp] != epoch) {
+            if (applicable && taskOp >= 0 && helpfulMark[taskOp] != epoch) {
                 helpfulMark[taskOp] = epoch;
                 if (helpfulCount == helpful.length) helpful = java.util.Arrays.copyOf(helpful, helpfulCount * 2);
                 helpful[helpfulCount++] = taskOp;

@@ -18,6 +18,14 @@ record GroundOp(String name, String[] args, int[] pre, int[] neg, int[] add, int
      */
     record When(int[] pre, int[] neg, int[] add, int[] del) { }
 
+    /** Name prefix of the rules of derived predicates, grounded like actions (not a PDDL name, so it cannot clash). */
+    static final String AXIOM_PREFIX = "(derived) ";
+
+    /** A rule of a derived predicate: its precondition is the rule's body, its one add the derived fact. */
+    boolean isAxiom() {
+        return name.startsWith(AXIOM_PREFIX);
+    }
+
     PddlStep toAction() {
         return new PddlStep(name, java.util.List.of(args));
     }

@@ -84,10 +84,8 @@ public final class GroundedProblem {
                 gn.add(id);
             }
         }
-        int[] initIds = initIds(problem);
-        if (task == null || task.ops.length != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
-            task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
-        }
+        refreshTask();
+        int[] initIds = closed(task, initIds(problem));
         // Reachability from this initial state: the grounding may have been extended by earlier ones.
         List<UnreachableGoal> unreachable = new ArrayList<>();
         if (unsolvable == null) {
@@ -128,19 +126,25 @@ public final class GroundedProblem {
     /** Name of the artificial operators that reach a disjunctive goal (not a PDDL name, so it cannot clash). */
     static final String GOAL_ACTION = "(reach-goal)";
 
+    private void refreshTask() {
+        if (task == null || task.ops.length + task.ruleCount() != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
+            task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
+        }
+    }
+
+    /** The initial state with its derived facts. */
+    private static int[] closed(SearchTask t, int[] init) {
+        return t.axioms == null ? init : t.axioms.close(init);
+    }
+
     private Query disjunctiveQuery(Problem problem) {
         List<GroundFormula.Conj> cases = new GroundFormula(grounder, true).dnf(problem.goal(), java.util.Map.of());
-        int[] initIds = initIds(problem);
+        refreshTask();
+        int[] initIds = closed(task, initIds(problem));
         if (cases.isEmpty()) {
-            if (task == null || task.ops.length != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
-                task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
-            }
             return new Query(task, initIds, new int[0], new int[0], "the goal never holds (its static part is false)", List.of());
         }
         if (cases.size() == 1) {
-            if (task == null || task.ops.length != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
-                task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
-            }
             GroundFormula.Conj c = cases.get(0);
             return withReachability(task, initIds, c.pos(), c.neg(), "goal atom");
         }

@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.triad.planner.pddl.Action;
+import org.triad.planner.pddl.Axiom;
+import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.Formula;
 import org.triad.planner.pddl.NumericTerm;
@@ -30,6 +32,9 @@ final class Grounder {
     final List<String> predNames = new ArrayList<>();
     final List<Integer> predArity = new ArrayList<>();
     final boolean[] fluent;
+    /** Derived predicates (defined by rules, never by effects) and their strata. */
+    final boolean[] derived;
+    final int[] stratum;
 
     private final List<Schema> schemas = new ArrayList<>();
 
@@ -67,6 +72,16 @@ final class Grounder {
             triggers.add(new ArrayList<>());
         }
         fluent = new boolean[predNames.size()];
+        derived = new boolean[predNames.size()];
+        stratum = new int[predNames.size()];
+        Map<String, Integer> strata = DerivedStrata.of(domain);
+        for (Map.Entry<String, Integer> e : strata.entrySet()) {
+            Integer p = predIds.get(e.getKey());
+            if (p == null) throw new PlanningInputException("derived predicate '" + e.getKey() + "' is not declared");
+            derived[p] = true;
+            fluent[p] = true;
+            stratum[p] = e.getValue();
+        }
         for (Action a : domain.actions()) {
             List<Normalizer.EffectLit> effs = new ArrayList<>();
             List<Normalizer.CondEffect> conds = new ArrayList<>();
@@ -76,7 +91,14 @@ final class Grounder {
         }
         for (Problem.NumericFact f : problem.numericInit()) numeric.put(numericKey(f.function(), f.args()), f.value());
         groundFormula = new GroundFormula(this, false);
-        for (Action a : domain.actions()) {
+        List<Action> schemasToGround = new ArrayList<>(domain.actions());
+        for (Axiom x : domain.axioms()) {
+            // a rule grounds like an action whose only effect is its derived fact
+            List<String> vars = x.parameters().stream().map(TypedName::name).toList();
+            schemasToGround.add(new Action(GroundOp.AXIOM_PREFIX + x.predicate(), x.parameters(), x.body(),
+                    List.of(new PddlEffect.Add(new Formula.Atom(x.predicate(), vars)))));
+        }
+        for (Action a : schemasToGround) {
             List<List<Normalizer.Lit>> dnf = liftedDnf(a.precondition());
             if (dnf != null) {
                 for (List<Normalizer.Lit> conj : dnf) compileSchema(a, conj, null);
@@ -160,6 +182,11 @@ final class Grounder {
         k[0] = p;
         System.arraycopy(args, 0, k, 1, args.length);
         return k;
+    }
+
+    /** Whether a fact id (of this grounding) is a derived fact. */
+    boolean isDerivedFact(int fact) {
+        return fact < facts.size() && derived[facts.get(fact)[0]];
     }
 
     boolean isStaticTrue(int pred, int[] args) {

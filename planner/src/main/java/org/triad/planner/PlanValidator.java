@@ -40,6 +40,13 @@ public final class PlanValidator {
         }
         Set<Formula.Atom> state = new HashSet<>(problem.init());
         Evaluator ev = new Evaluator(universe, state);
+        Map<String, Integer> strata;
+        try {
+            strata = DerivedStrata.of(domain);
+        } catch (PlanningInputException e) {
+            return new Report(false, -1, e.getMessage(), false);
+        }
+        ev.derive(domain, strata);
         for (int i = 0; i < plan.steps().size(); i++) {
             PddlStep step = plan.steps().get(i);
             String where = "step " + (i + 1) + " " + step + ": ";
@@ -66,6 +73,7 @@ public final class PlanValidator {
             ev.effects(a.effects(), binding, adds, dels);
             state.removeAll(dels);
             state.addAll(adds);
+            ev.derive(domain, strata);
         }
         String goalFailure = ev.explainFalse(problem.goal(), Map.of());
         if (goalFailure != null) return new Report(false, -1, "goal not satisfied at the end: " + goalFailure, false);
@@ -128,6 +136,33 @@ public final class PlanValidator {
                 if (!universal && r == null) return null;
             }
             return universal ? null : "no witness for " + PddlWriter.formula(f);
+        }
+
+        /**
+         * Recomputes the derived atoms from the basic ones: stratum by stratum, every rule instance
+         * over the typed objects, until nothing new holds.
+         */
+        void derive(Domain domain, Map<String, Integer> strata) {
+            if (strata.isEmpty()) return;
+            state.removeIf(a -> strata.containsKey(a.predicate()));
+            int top = strata.values().stream().mapToInt(Integer::intValue).max().orElse(0);
+            for (int s = 0; s <= top; s++) {
+                boolean changed = true;
+                while (changed) {
+                    changed = false;
+                    for (org.triad.planner.pddl.Axiom x : domain.axioms()) {
+                        if (strata.get(x.predicate()) != s) continue;
+                        for (Map<String, String> b : new Normalizer(universe).bindings(x.parameters(), Map.of())) {
+                            List<String> args = new ArrayList<>();
+                            for (TypedName p : x.parameters()) args.add(b.get(p.name()));
+                            Formula.Atom head = new Formula.Atom(x.predicate(), args);
+                            if (state.contains(head) || explainFalse(x.body(), b) != null) continue;
+                            state.add(head);
+                            changed = true;
+                        }
+                    }
+                }
+            }
         }
 
         void effects(List<PddlEffect> effects, Map<String, String> b, List<Formula.Atom> adds, List<Formula.Atom> dels) {

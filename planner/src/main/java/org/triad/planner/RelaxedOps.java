@@ -33,16 +33,24 @@ final class RelaxedOps {
         int[] complement = new int[t.numFacts];
         Arrays.fill(complement, -1);
         List<Integer> negList = new ArrayList<>();
+        // a derived fact gets no complement: nothing deletes it, rules just stop deriving it, so a
+        // relaxation must not require it false (dropping that condition keeps the relaxation sound)
+        boolean[] derived = t.axioms == null ? new boolean[t.numFacts] : t.axioms.derivedFact;
         for (int o = 0; o < t.ops.length; o++) {
-            for (int f : t.neg[o]) if (complement[f] < 0) { complement[f] = t.numFacts + negList.size(); negList.add(f); }
+            for (int f : t.neg[o]) if (complement[f] < 0 && !derived[f]) { complement[f] = t.numFacts + negList.size(); negList.add(f); }
             if (t.when[o] == null) continue;
             for (GroundOp.When w : t.when[o]) {
-                for (int f : w.neg()) if (complement[f] < 0) { complement[f] = t.numFacts + negList.size(); negList.add(f); }
+                for (int f : w.neg()) if (complement[f] < 0 && !derived[f]) { complement[f] = t.numFacts + negList.size(); negList.add(f); }
+            }
+        }
+        if (t.axioms != null) {
+            for (int[] ns : t.axioms.neg) {
+                for (int f : ns) if (complement[f] < 0 && !derived[f]) { complement[f] = t.numFacts + negList.size(); negList.add(f); }
             }
         }
         negFacts = negList.stream().mapToInt(Integer::intValue).toArray();
         size = t.numFacts + negFacts.length;
-        if (!t.hasConditionalEffects && negFacts.length == 0) {
+        if (!t.hasConditionalEffects && negFacts.length == 0 && t.axioms == null) {
             count = t.ops.length;
             pre = t.pre;
             add = t.add;
@@ -70,6 +78,14 @@ final class RelaxedOps {
                 p.add(Grounder.union(base, Grounder.union(w.pre(), complements(w.neg(), complement))));
                 a.add(wAdd);
                 owner.add(o);
+            }
+        }
+        if (t.axioms != null) {
+            // rules relax like operators that belong to no action (op -1: not counted, never helpful)
+            for (int r = 0; r < t.axioms.head.length; r++) {
+                p.add(Grounder.union(t.axioms.pre[r], complements(t.axioms.neg[r], complement)));
+                a.add(new int[] {t.axioms.head[r]});
+                owner.add(-1);
             }
         }
         count = p.size();

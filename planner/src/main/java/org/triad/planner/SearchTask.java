@@ -20,6 +20,12 @@ final class SearchTask {
     final boolean hasConditionalEffects;
     /** The operators as the delete relaxation sees them (conditional effects split off). */
     final RelaxedOps relaxed;
+    /** The rules of derived predicates, null without any (then states hold basic facts only). */
+    final Axioms axioms;
+
+    int ruleCount() {
+        return axioms == null ? 0 : axioms.head.length;
+    }
     /** Operators having the fact as a positive precondition. */
     final int[][] preOf;
     /** Operators triggered for applicability tests by their first precondition. */
@@ -59,7 +65,19 @@ final class SearchTask {
     SearchTask(Grounder grounder, List<GroundOp> opList, int numFacts) {
         this.grounder = grounder;
         this.numFacts = numFacts;
-        ops = opList.toArray(new GroundOp[0]);
+        List<GroundOp> actions = new ArrayList<>(opList.size());
+        List<GroundOp> rules = new ArrayList<>();
+        for (GroundOp o : opList) (o.isAxiom() ? rules : actions).add(o);
+        if (rules.isEmpty()) {
+            axioms = null;
+        } else {
+            boolean[] derivedFact = new boolean[numFacts];
+            for (int f = 0; f < numFacts; f++) derivedFact[f] = grounder.isDerivedFact(f);
+            List<Integer> strata = new ArrayList<>(rules.size());
+            for (GroundOp r : rules) strata.add(grounder.stratum[grounder.facts.get(r.add()[0])[0]]);
+            axioms = new Axioms(rules, strata, derivedFact);
+        }
+        ops = actions.toArray(new GroundOp[0]);
         int n = ops.length;
         pre = new int[n][];
         neg = new int[n][];
@@ -126,6 +144,8 @@ final class SearchTask {
      * heuristic only need these.
      */
     synchronized SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
+        // a rule's negative conditions make every fact it reads matter both ways: keep the whole task
+        if (axioms != null) return this;
         if (addOf == null) {
             addOf = invert(withConditional(add, true), numFacts);
             delOf = invert(withConditional(del, false), numFacts);

@@ -75,7 +75,8 @@ final class Successors {
             }
             out[n++] = next;
         }
-        return n == out.length ? out : Arrays.copyOf(out, n);
+        int[] next = n == out.length ? out : Arrays.copyOf(out, n);
+        return t.axioms == null ? next : t.axioms.close(next);
     }
 
     static boolean satisfies(int[] state, int[] goalPos, int[] goalNeg) {

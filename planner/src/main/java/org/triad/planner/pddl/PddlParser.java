@@ -72,6 +72,8 @@ public final class PddlParser {
         List<PredicateDecl> functions = new ArrayList<>();
         List<Action> actions = new ArrayList<>();
         List<SExpr> actionExprs = new ArrayList<>();
+        List<Axiom> axioms = new ArrayList<>();
+        List<SExpr> axiomExprs = new ArrayList<>();
         for (SExpr sec : items.subList(2, items.size())) {
             String head = sec.head();
             if (head == null) throw err(sec, "expected a domain section such as '(:predicates ...)'");
@@ -93,7 +95,11 @@ public final class PddlParser {
                     actions.add(action(sec));
                     actionExprs.add(sec);
                 }
-                case ":derived", ":durative-action" -> throw err(sec, head + " is not supported (STRIPS/ADL subset only)");
+                case ":derived" -> {
+                    axioms.add(axiom(sec));
+                    axiomExprs.add(sec);
+                }
+                case ":durative-action" -> throw err(sec, head + " is not supported (durative actions)");
                 default -> throw err(sec, "unknown domain section '" + head + "'");
             }
         }
@@ -104,16 +110,33 @@ public final class PddlParser {
         Set<String> declared = new HashSet<>();
         preds.forEach(p -> declared.add(p.name()));
         for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
-        return new Domain(name, reqs, types, constants, preds, functions, actions);
+        Set<String> effectPredicates = new HashSet<>();
+        for (Action a : actions) {
+            List<Formula.Atom> atoms = new ArrayList<>();
+            collectEffectAtomsOnly(a.effects(), atoms);
+            atoms.forEach(at -> effectPredicates.add(at.predicate()));
+        }
+        for (int i = 0; i < axioms.size(); i++) {
+            Axiom ax = axioms.get(i);
+            SExpr at = axiomExprs.get(i);
+            if (!declared.contains(ax.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' is not declared in :predicates");
+            if (effectPredicates.contains(ax.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' is changed by an action effect");
+            List<Formula.Atom> atoms = new ArrayList<>();
+            collectAtoms(ax.body(), atoms);
+            for (Formula.Atom a : atoms) {
+                if (!declared.contains(a.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' uses undeclared predicate '" + a.predicate() + "'");
+            }
+        }
+        return new Domain(name, reqs, types, constants, preds, functions, actions, axioms);
     }
 
     /** Requirements the parser and engine handle. */
     static final Set<String> SUPPORTED_REQUIREMENTS = Set.of(":strips", ":typing", ":negative-preconditions",
             ":disjunctive-preconditions", ":equality", ":existential-preconditions", ":universal-preconditions",
-            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs");
+            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs", ":derived-predicates");
     /** Requirements of PDDL 1.2-3.1 that this planner does not handle (it would plan wrongly if it ignored them). */
     static final Set<String> UNSUPPORTED_REQUIREMENTS = Set.of(":numeric-fluents", ":fluents", ":object-fluents",
-            ":durative-actions", ":duration-inequalities", ":continuous-effects", ":derived-predicates",
+            ":durative-actions", ":duration-inequalities", ":continuous-effects",
             ":timed-initial-literals", ":preferences", ":constraints", ":time", ":expression-evaluation",
             ":domain-axioms", ":safety-constraints", ":open-world", ":true-negation", ":ucpop", ":foreach-expansions",
             ":dag-expansions", ":subgoal-through-axioms", ":action-expansions");
@@ -178,6 +201,32 @@ public final class PddlParser {
                 collectEffectAtoms(w.body(), out);
             }
         }
+    }
+
+    private static void collectEffectAtomsOnly(List<PddlEffect> effects, List<Formula.Atom> out) {
+        for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.Add a) out.add(a.atom());
+            else if (e instanceof PddlEffect.Delete d) out.add(d.atom());
+            else if (e instanceof PddlEffect.Forall q) collectEffectAtomsOnly(q.body(), out);
+            else if (e instanceof PddlEffect.When w) collectEffectAtomsOnly(w.body(), out);
+        }
+    }
+
+    /** {@code (:derived (PREDICATE ?x - t ...) BODY)}: the body may only use the head's variables (and its own quantified ones). */
+    private Axiom axiom(SExpr sec) {
+        List<SExpr> it = sec.items;
+        if (it.size() != 3) throw err(sec, "expected '(:derived (PREDICATE PARAMETERS) FORMULA)'");
+        List<SExpr> h = list(it.get(1), "'(PREDICATE PARAMETERS)'");
+        if (h.isEmpty()) throw err(it.get(1), "empty derived predicate head");
+        String pred = name(h.get(0), "a predicate name");
+        List<TypedName> params = typedList(h.subList(1, h.size()), "object", true);
+        Set<String> vars = new HashSet<>();
+        for (TypedName p : params) {
+            if (!vars.add(p.name())) throw err(it.get(1), "parameter '" + p.name() + "' is declared twice in derived predicate '" + pred + "'");
+        }
+        Formula body = formula(it.get(2));
+        checkVariables(body, vars, sec, "derived predicate " + pred);
+        return new Axiom(pred, params, body);
     }
 
     private PredicateDecl predicateDecl(SExpr p) {
@@ -282,7 +331,8 @@ public final class PddlParser {
 
     private void checkVar(String term, Set<String> bound, SExpr at, String action) {
         if (term.startsWith("?") && !bound.contains(term)) {
-            throw err(at, "variable '" + term + "' is not a parameter of action '" + action + "'");
+            String owner = action.startsWith("derived predicate ") ? "derived predicate '" + action.substring(18) + "'" : "action '" + action + "'";
+            throw err(at, "variable '" + term + "' is not a parameter of " + owner);
         }
     }
 

@@ -27,6 +27,11 @@ public final class PddlWriter {
             sb.append("    :precondition ").append(formula(a.precondition())).append('\n');
             sb.append("    :effect ").append(effects(a.effects())).append(")\n");
         }
+        for (Axiom x : d.axioms()) {
+            sb.append("  (:derived (").append(x.predicate());
+            if (!x.parameters().isEmpty()) sb.append(' ').append(typed(x.parameters()));
+            sb.append(")\n    ").append(formula(x.body())).append(")\n");
+        }
         return sb.append(")\n").toString();
     }
 
