@@ -95,6 +95,108 @@ public final class PlanValidator {
             return new Formula.Atom(a.predicate(), args);
         }
 
+        private static void collect(Formula f, List<Formula.Atom> out) {
+            if (f instanceof Formula.Atom a) out.add(a);
+            else if (f instanceof Formula.Not n) collect(n.body(), out);
+            else if (f instanceof Formula.And a) a.parts().forEach(p -> collect(p, out));
+            else if (f instanceof Formula.Or o) o.parts().forEach(p -> collect(p, out));
+            else if (f instanceof Formula.Imply i) {
+                collect(i.condition(), out);
+                collect(i.consequence(), out);
+            } else if (f instanceof Formula.Forall q) collect(q.body(), out);
+            else if (f instanceof Formula.Exists q) collect(q.body(), out);
+        }
+
+        /** Whether the formula holds (as {@link #explainFalse} without building descriptions). */
+        boolean holds(Formula f, Map<String, String> b) {
+            if (f instanceof Formula.Atom a) return state.contains(ground(a, b));
+            if (f instanceof Formula.Equals e) return b.getOrDefault(e.left(), e.left()).equals(b.getOrDefault(e.right(), e.right()));
+            if (f instanceof Formula.Not n) return !holds(n.body(), b);
+            if (f instanceof Formula.And and) {
+                for (Formula p : and.parts()) if (!holds(p, b)) return false;
+                return true;
+            }
+            if (f instanceof Formula.Or or) {
+                for (Formula p : or.parts()) if (holds(p, b)) return true;
+                return false;
+            }
+            if (f instanceof Formula.Imply i) return !holds(i.condition(), b) || holds(i.consequence(), b);
+            if (f instanceof Formula.Exists e) {
+                // nested exists over a conjunction: bind one variable at a time and test each conjunct
+                // as soon as its variables are bound, instead of enumerating every combination
+                List<TypedName> vars = new ArrayList<>(e.variables());
+                Formula body = e.body();
+                while (body instanceof Formula.Exists inner) {
+                    vars.addAll(inner.variables());
+                    body = inner.body();
+                }
+                List<Formula> conjuncts = body instanceof Formula.And and ? and.parts() : List.of(body);
+                List<java.util.Set<String>> free = new ArrayList<>();
+                for (Formula c : conjuncts) free.add(freeVariables(c));
+                return witness(vars, 0, conjuncts, free, new java.util.HashMap<>(b), new boolean[conjuncts.size()]);
+            }
+            Formula.Forall q = (Formula.Forall) f;
+            for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) {
+                if (!holds(q.body(), nb)) return false;
+            }
+            return true;
+        }
+
+        private boolean witness(List<TypedName> vars, int i, List<Formula> conjuncts, List<java.util.Set<String>> free,
+                                Map<String, String> b, boolean[] checked) {
+            // test the conjuncts whose variables are all bound now
+            List<Integer> now = new ArrayList<>();
+            for (int c = 0; c < conjuncts.size(); c++) {
+                if (checked[c] || !b.keySet().containsAll(free.get(c)) && i < vars.size()) continue;
+                if (!holds(conjuncts.get(c), b)) {
+                    for (int k : now) checked[k] = false;
+                    return false;
+                }
+                checked[c] = true;
+                now.add(c);
+            }
+            boolean found = i == vars.size();
+            if (!found) {
+                TypedName v = vars.get(i);
+                for (int o : universe.ofTypes(v.types())) {
+                    b.put(v.name(), universe.names.get(o));
+                    if (witness(vars, i + 1, conjuncts, free, b, checked)) {
+                        found = true;
+                        break;
+                    }
+                }
+                b.remove(v.name());
+            }
+            for (int k : now) checked[k] = false;
+            return found;
+        }
+
+        /** The variables a formula uses that it does not quantify itself. */
+        private static java.util.Set<String> freeVariables(Formula f) {
+            java.util.Set<String> out = new java.util.HashSet<>();
+            if (f instanceof Formula.Atom a) {
+                for (String t : a.args()) if (t.startsWith("?")) out.add(t);
+            } else if (f instanceof Formula.Equals e) {
+                if (e.left().startsWith("?")) out.add(e.left());
+                if (e.right().startsWith("?")) out.add(e.right());
+            } else if (f instanceof Formula.Not n) {
+                out.addAll(freeVariables(n.body()));
+            } else if (f instanceof Formula.And a) {
+                a.parts().forEach(p -> out.addAll(freeVariables(p)));
+            } else if (f instanceof Formula.Or o) {
+                o.parts().forEach(p -> out.addAll(freeVariables(p)));
+            } else if (f instanceof Formula.Imply i) {
+                out.addAll(freeVariables(i.condition()));
+                out.addAll(freeVariables(i.consequence()));
+            } else {
+                boolean universal = f instanceof Formula.Forall;
+                List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
+                out.addAll(freeVariables(universal ? ((Formula.Forall) f).body() : ((Formula.Exists) f).body()));
+                vars.forEach(v -> out.remove(v.name()));
+            }
+            return out;
+        }
+
         /** Null when the formula holds, else a description of a false part. */
         String explainFalse(Formula f, Map<String, String> b) {
             if (f instanceof Formula.Atom a) {
@@ -147,6 +249,14 @@ public final class PlanValidator {
             state.removeIf(a -> strata.containsKey(a.predicate()));
             int top = strata.values().stream().mapToInt(Integer::intValue).max().orElse(0);
             for (int s = 0; s <= top; s++) {
+                // a stratum whose rules read no derived predicate of their own stratum needs one pass
+                boolean recursive = false;
+                for (org.triad.planner.pddl.Axiom x : domain.axioms()) {
+                    if (strata.get(x.predicate()) != s) continue;
+                    List<Formula.Atom> atoms = new ArrayList<>();
+                    collect(x.body(), atoms);
+                    for (Formula.Atom at : atoms) recursive |= Integer.valueOf(s).equals(strata.get(at.predicate()));
+                }
                 boolean changed = true;
                 while (changed) {
                     changed = false;
@@ -156,9 +266,9 @@ public final class PlanValidator {
                             List<String> args = new ArrayList<>();
                             for (TypedName p : x.parameters()) args.add(b.get(p.name()));
                             Formula.Atom head = new Formula.Atom(x.predicate(), args);
-                            if (state.contains(head) || explainFalse(x.body(), b) != null) continue;
+                            if (state.contains(head) || !holds(x.body(), b)) continue;
                             state.add(head);
-                            changed = true;
+                            changed = recursive;
                         }
                     }
                 }
@@ -173,7 +283,7 @@ public final class PlanValidator {
                     for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels);
                 } else if (e instanceof PddlEffect.When w) {
                     // the state is still the one before the action: all effects are collected before any applies
-                    if (explainFalse(w.condition(), b) == null) effects(w.body(), b, adds, dels);
+                    if (holds(w.condition(), b)) effects(w.body(), b, adds, dels);
                 }
             }
         }

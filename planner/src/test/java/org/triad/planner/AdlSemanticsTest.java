@@ -212,4 +212,60 @@ class AdlSemanticsTest {
         assertEquals(3, h.evaluate(q.init(), q.goalPos()));
         assertEquals(3, TriadEngineTest.solveAndValidate(d, p).plan().length());
     }
+
+    /** A line of rooms a - b - c: a room is lit if its lamp is on or a lit neighbour's door is open (recursive). */
+    private static final Domain LIGHT = domain("""
+            (define (domain light) (:requirements :adl :derived-predicates :typing)
+              (:types room)
+              (:predicates (lamp ?r - room) (door ?r ?s - room) (next ?r ?s - room) (lit ?r - room) (dark ?r - room) (done))
+              (:derived (lit ?r - room) (or (lamp ?r) (exists (?s - room) (and (lit ?s) (door ?s ?r)))))
+              (:derived (dark ?r - room) (not (lit ?r)))
+              (:action switch-on :parameters (?r - room) :effect (lamp ?r))
+              (:action open :parameters (?r ?s - room) :precondition (or (next ?r ?s) (next ?s ?r)) :effect (door ?r ?s))
+              (:action finish :parameters () :precondition (forall (?r - room) (not (dark ?r))) :effect (done)))""");
+
+    @Test
+    void derivedPredicatesAreRecomputedAfterEveryActionRecursivelyAndWithNegation() {
+        Problem p = problem("""
+                (define (problem l) (:domain light)
+                  (:objects a b c - room)
+                  (:init (next a b) (next b c) (lamp a))
+                  (:goal (and (lit c) (done))))""");
+        SolveResult r = TriadEngineTest.solveAndValidate(LIGHT, p);
+        // two doors or one lamp for c, plus one for b unless c's light spreads back: 3 or 4 steps with finish
+        assertTrue(r.plan().length() <= 4, r.plan().toPddl());
+        assertFalse(PlanValidator.validate(LIGHT, p, plan("finish")).valid(), "b and c are dark at first");
+        assertTrue(PlanValidator.validate(LIGHT, p, plan("open a b", "open b c", "finish")).valid(),
+                "light spreads through open doors: nothing is dark any more");
+        PlanValidator.Report bad = PlanValidator.validate(LIGHT, p, plan("open a b", "finish"));
+        assertEquals("step 2 (finish): precondition not satisfied: (dark c) is true", bad.message());
+    }
+
+    @Test
+    void derivedGoalThatNeverHoldsIsUnsolvable() {
+        // nothing switches a lamp off, so a stays lit: (dark a) never holds; the relaxation cannot see
+        // that (it drops conditions that a derived fact be false), the exhausted search proves it
+        Problem p = problem("""
+                (define (problem l) (:domain light)
+                  (:objects a b c - room)
+                  (:init (next a b) (next b c) (lamp a))
+                  (:goal (dark a)))""");
+        SolveResult r = new TriadEngine().solve(LIGHT, p, TIMEOUT);
+        assertEquals(SolveResult.Status.UNSOLVABLE, r.status(), r.message());
+    }
+
+    @Test
+    void rulesWithNegationThroughRecursionAreAnInputError() {
+        Domain d = domain("""
+                (define (domain loop) (:requirements :derived-predicates)
+                  (:predicates (p) (q) (r))
+                  (:derived (p) (not (q)))
+                  (:derived (q) (p))
+                  (:action a :parameters () :effect (r)))""");
+        Problem p = problem("(define (problem l) (:domain loop) (:init) (:goal (r)))");
+        SolveResult r = new TriadEngine().solve(d, p, TIMEOUT);
+        assertEquals(SolveResult.Status.ERROR, r.status());
+        assertTrue(r.message().endsWith("depends on its own negation: the rules are not stratified"), r.message());
+        assertFalse(PlanValidator.validate(d, p, plan("a")).valid());
+    }
 }

@@ -11,7 +11,8 @@ import org.triad.planner.pddl.Problem;
 
 /**
  * The ADL sample of the IPC corpus under src/test/resources/pddl/ipc-adl (see SOURCE.md there):
- * conditional effects, quantified, disjunctive and implied preconditions and goals. Every problem is
+ * conditional effects, quantified, disjunctive and implied preconditions and goals, derived
+ * predicates (optical-telegraphs, philosophers, psr-middle). Every problem is
  * solved and its plan replayed on the lifted domain by {@link PlanValidator}, which applies the
  * PDDL semantics independently of the grounder.
  */
@@ -19,7 +20,8 @@ class IpcAdlSampleTest {
     @ParameterizedTest
     @CsvSource({"miconic-simpleadl, s2-0", "miconic-simpleadl, s6-0", "miconic-fulladl, f2-0", "miconic-fulladl, f6-0",
             "schedule, probschedule-2-0", "schedule, probschedule-3-0", "assembly, prob01", "trucks, p01",
-            "openstacks-sat08-adl, p01", "airport-adl, p01-airport1-p1", "caldera-sat18-adl, p01"})
+            "openstacks-sat08-adl, p01", "airport-adl, p01-airport1-p1", "caldera-sat18-adl, p01",
+            "optical-telegraphs, p01-opt2", "philosophers, p02-phil3", "psr-middle, p01-s17-n2-l2-f30", "psr-middle, p06-s37-n3-l3-f30"})
     void solvesAndValidates(String domain, String problem) {
         TriadEngineTest.solveAndValidate(TestProblems.domain("ipc-adl/" + domain + "/domain.pddl"),
                 TestProblems.problem("ipc-adl/" + domain + "/" + problem + ".pddl"));

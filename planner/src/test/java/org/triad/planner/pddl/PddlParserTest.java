@@ -141,6 +141,33 @@ class PddlParserTest {
     }
 
     @Test
+    void readsDerivedPredicatesAndRejectsBadRulesWithTheirPosition() {
+        Domain d = PddlParser.parseDomain("""
+                (define (domain x) (:requirements :derived-predicates) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?x))
+                  (:action a :parameters (?x) :precondition (q ?x) :effect (not (p ?x))))""", "x.pddl");
+        assertEquals(List.of(new Axiom("q", List.of(TypedName.of("?x", "object")), Formula.Atom.of("p", "?x"))), d.axioms());
+        assertEquals(d, PddlParser.parseDomain(PddlWriter.write(d), "written.pddl"));
+        PddlParseException e = domainError("""
+                (define (domain x) (:predicates (p ?x))
+                  (:derived (q ?x) (p ?x)))""");
+        assertEquals("bad.pddl:2:3: derived predicate 'q' is not declared in :predicates", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?x))
+                  (:action a :parameters (?x) :effect (q ?x)))""");
+        assertEquals("bad.pddl:2:3: derived predicate 'q' is changed by an action effect", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?y)))""");
+        assertEquals("bad.pddl:2:3: variable '?y' is not a parameter of derived predicate 'q'", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x)))""");
+        assertEquals("bad.pddl:2:3: expected '(:derived (PREDICATE PARAMETERS) FORMULA)'", e.getMessage());
+    }
+
+    @Test
     void rejectsAProblemGivenAsDomainAndEmptyInput() {
         assertTrue(domainError("(define (problem p) (:domain x))").detail().contains("expected '(domain NAME)'"));
         assertTrue(domainError("  ; only a comment\n").detail().contains("empty input"));
