@@ -153,6 +153,8 @@ final class CompressedGraphSearch {
 
     /** Whether the structure holds for this task, initial state and goal (see the class comment). */
     static boolean applies(SearchTask t, int[] init, int[] goalPos, int[] goalNeg) {
+        // its move/remainder split reads unconditional effects only
+        if (t.hasConditionalEffects || t.axioms != null) return false;
         Structure s = t.graphStructure();
         if (!s.valid) return false;
         int tokens = 0;

@@ -5,12 +5,16 @@ package org.triad.planner;
  * deletes and negative preconditions) until all goals are reached, then a relaxed plan extracted
  * backwards through first achievers. Its operators applicable in the state are the helpful actions.
  * Scratch arrays are reused and invalidated by an epoch counter, so an evaluation only touches the
- * part of the graph it explores.
+ * part of the graph it explores. Conditional effects are relaxed as separate operators
+ * ({@link RelaxedOps}); the value counts each operator of the relaxed plan once.
  */
 final class FfHeuristic {
     static final int INFINITE = Integer.MAX_VALUE;
 
-    private final SearchTask t;
+    private final RelaxedOps t;
+    /** Per task operator: epoch in which it was counted in the relaxed plan / made helpful. */
+    private final int[] counted;
+    private final int[] helpfulMark;
     private final int[] level;
     private final int[] factEpoch;
     private final int[] supporter;
@@ -30,10 +34,12 @@ final class FfHeuristic {
     private int[] helpful = new int[16];
     private int helpfulCount;
 
-    FfHeuristic(SearchTask t) {
-        this.t = t;
-        int nf = t.numFacts;
-        int no = t.ops.length;
+    FfHeuristic(SearchTask task) {
+        this.t = task.relaxed;
+        int nf = t.size;
+        int no = t.count;
+        counted = new int[task.ops.length];
+        helpfulMark = new int[task.ops.length];
         level = new int[nf];
         factEpoch = new int[nf];
         supporter = new int[nf];
@@ -83,6 +89,14 @@ final class FfHeuristic {
             level[f] = 0;
             supporter[f] = -1;
             queue[tail++] = f;
+        }
+        for (int k = 0; k < t.negFacts.length; k++) {
+            if (factEpoch[t.negFacts[k]] == epoch) continue;
+            int c = t.numFacts + k;
+            factEpoch[c] = epoch;
+            level[c] = 0;
+            supporter[c] = -1;
+            queue[tail++] = c;
         }
         int missing = 0;
         for (int g : goals) if (factEpoch[g] != epoch) missing++;
@@ -150,7 +164,11 @@ final class FfHeuristic {
             int o = supporter[f];
             if (opMark[o] == epoch) continue;
             opMark[o] = epoch;
-            h++;
+            int taskOp = t.op[o];
+            if (taskOp >= 0 && counted[taskOp] != epoch) {
+                counted[taskOp] = epoch;
+                h++;
+            }
             boolean applicable = true;
             for (int p : t.pre[o]) {
                 if (level[p] > 0) {
@@ -161,9 +179,10 @@ final class FfHeuristic {
                     }
                 }
             }
-            if (applicable) {
+            if (applicable && taskOp >= 0 && helpfulMark[taskOp] != epoch) {
+                helpfulMark[taskOp] = epoch;
                 if (helpfulCount == helpful.length) helpful = java.util.Arrays.copyOf(helpful, helpfulCount * 2);
-                helpful[helpfulCount++] = o;
+                helpful[helpfulCount++] = taskOp;
             }
         }
         return h;
@@ -189,6 +208,13 @@ final class FfHeuristic {
                 found = f;
                 foundLevel = 0;
             }
+        }
+        for (int k = 0; k < t.negFacts.length; k++) {
+            if (factEpoch[t.negFacts[k]] == epoch) continue;
+            int c = t.numFacts + k;
+            factEpoch[c] = epoch;
+            level[c] = 0;
+            queue[tail++] = c;
         }
         for (int o : t.noPre) {
             for (int a : t.add[o]) {

@@ -58,11 +58,10 @@ public final class GroundedProblem {
             extensions++;
             grounder.extend(problem.init());
         }
-        // Goal literals: one conjunction directly; a disjunctive goal would need goal actions.
-        List<List<Normalizer.Lit>> dnf = new Normalizer(grounder.universe).dnf(problem.goal());
-        if (dnf.size() != 1) {
-            throw new PlanningInputException("disjunctive goals are not supported by the Triad engine; rewrite the goal as a conjunction");
-        }
+        // Goal literals: a conjunction directly; otherwise the goal grounded with the static facts, and
+        // if that leaves several disjuncts, one artificial operator per disjunct reaching a new goal fact.
+        List<List<Normalizer.Lit>> dnf = liftedGoal(problem.goal());
+        if (dnf == null || dnf.size() != 1) return disjunctiveQuery(problem);
         List<Integer> gp = new ArrayList<>();
         List<Integer> gn = new ArrayList<>();
         String unsolvable = null;
@@ -85,15 +84,8 @@ public final class GroundedProblem {
                 gn.add(id);
             }
         }
-        List<Integer> init = new ArrayList<>();
-        for (Formula.Atom a : problem.init()) {
-            int p = grounder.pred(a);
-            if (grounder.fluent[p]) init.add(grounder.factId(p, ids(a)));
-        }
-        if (task == null || task.ops.length != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
-            task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
-        }
-        int[] initIds = Grounder.sortedUnique(init);
+        refreshTask();
+        int[] initIds = closed(task, initIds(problem));
         // Reachability from this initial state: the grounding may have been extended by earlier ones.
         List<UnreachableGoal> unreachable = new ArrayList<>();
         if (unsolvable == null) {
@@ -111,6 +103,76 @@ public final class GroundedProblem {
             }
         }
         return new Query(task, initIds, Grounder.sortedUnique(gp), Grounder.sortedUnique(gn), unsolvable, unreachable);
+    }
+
+    private int[] initIds(Problem problem) {
+        List<Integer> init = new ArrayList<>();
+        for (Formula.Atom a : problem.init()) {
+            int p = grounder.pred(a);
+            if (grounder.fluent[p]) init.add(grounder.factId(p, ids(a)));
+        }
+        return Grounder.sortedUnique(init);
+    }
+
+    /** The goal's normal form over literals if it is small lifted (then static literals are checked one by one), else null. */
+    private List<List<Normalizer.Lit>> liftedGoal(Formula goal) {
+        try {
+            return new Normalizer(grounder.universe, Grounder.LIFTED_QUANTIFIED_DISJUNCTS).dnf(goal);
+        } catch (PlanningInputException e) {
+            return null;
+        }
+    }
+
+    /** Name of the artificial operators that reach a disjunctive goal (not a PDDL name, so it cannot clash). */
+    static final String GOAL_ACTION = "(reach-goal)";
+
+    private void refreshTask() {
+        if (task == null || task.ops.length + task.ruleCount() != grounder.ops.size() || task.numFacts != grounder.facts.size()) {
+            task = new SearchTask(grounder, grounder.ops, grounder.facts.size());
+        }
+    }
+
+    /** The initial state with its derived facts. */
+    private static int[] closed(SearchTask t, int[] init) {
+        return t.axioms == null ? init : t.axioms.close(init);
+    }
+
+    private Query disjunctiveQuery(Problem problem) {
+        List<GroundFormula.Conj> cases = new GroundFormula(grounder, true).dnf(problem.goal(), java.util.Map.of());
+        refreshTask();
+        int[] initIds = closed(task, initIds(problem));
+        if (cases.isEmpty()) {
+            return new Query(task, initIds, new int[0], new int[0], "the goal never holds (its static part is false)", List.of());
+        }
+        if (cases.size() == 1) {
+            GroundFormula.Conj c = cases.get(0);
+            return withReachability(task, initIds, c.pos(), c.neg(), "goal atom");
+        }
+        int goalFact = grounder.facts.size();
+        List<GroundOp> ops = new ArrayList<>(grounder.ops);
+        for (GroundFormula.Conj c : cases) {
+            ops.add(new GroundOp(GOAL_ACTION, new String[0], c.pos(), c.neg(), new int[] {goalFact}, new int[0], 0, null, true));
+        }
+        SearchTask extended = new SearchTask(grounder, ops, goalFact + 1);
+        boolean[] reached = ReachabilityExplainer.relaxedReach(extended, initIds);
+        String unsolvable = reached[goalFact] ? null : "no disjunct of the goal is reachable even ignoring delete effects";
+        return new Query(extended, initIds, new int[] {goalFact}, new int[0], unsolvable, List.of());
+    }
+
+    private Query withReachability(SearchTask t, int[] initIds, int[] goalPos, int[] goalNeg, String what) {
+        boolean[] reached = ReachabilityExplainer.relaxedReach(t, initIds);
+        List<UnreachableGoal> unreachable = new ArrayList<>();
+        ReachabilityExplainer explainer = null;
+        for (int g : goalPos) {
+            if (reached[g]) continue;
+            if (explainer == null) explainer = new ReachabilityExplainer(grounder, reached);
+            int[] f = grounder.facts.get(g);
+            unreachable.add(explainer.explain(f[0], java.util.Arrays.copyOfRange(f, 1, f.length)));
+        }
+        String unsolvable = unreachable.isEmpty() ? null
+                : what + (unreachable.size() > 1 ? "s are" : " is") + " unreachable even ignoring delete effects: "
+                        + String.join("; ", unreachable.stream().map(UnreachableGoal::toString).toList());
+        return new Query(t, initIds, goalPos, goalNeg, unsolvable, unreachable);
     }
 
     private int[] ids(Formula.Atom a) {

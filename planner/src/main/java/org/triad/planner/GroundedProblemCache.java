@@ -130,6 +130,7 @@ public final class GroundedProblemCache {
             if (e instanceof PddlEffect.Add x) out.add(x.atom());
             else if (e instanceof PddlEffect.Delete x) out.add(x.atom());
             else if (e instanceof PddlEffect.Forall x) collect(x.body(), out);
+            else if (e instanceof PddlEffect.When x) collect(x.body(), out);
         }
     }
 

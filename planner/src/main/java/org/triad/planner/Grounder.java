@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.triad.planner.pddl.Action;
+import org.triad.planner.pddl.Axiom;
+import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.Formula;
 import org.triad.planner.pddl.NumericTerm;
@@ -30,6 +32,9 @@ final class Grounder {
     final List<String> predNames = new ArrayList<>();
     final List<Integer> predArity = new ArrayList<>();
     final boolean[] fluent;
+    /** Derived predicates (defined by rules, never by effects) and their strata. */
+    final boolean[] derived;
+    final int[] stratum;
 
     private final List<Schema> schemas = new ArrayList<>();
 
@@ -51,6 +56,9 @@ final class Grounder {
 
     final List<GroundOp> ops = new ArrayList<>();
     private final Normalizer normalizer;
+    private final GroundFormula groundFormula;
+    /** Lifted normal forms of quantified preconditions beyond this size are grounded per operator instead. */
+    static final int LIFTED_QUANTIFIED_DISJUNCTS = 64;
 
     Grounder(Domain domain, Problem problem) {
         universe = new ObjectUniverse(domain, problem);
@@ -64,14 +72,42 @@ final class Grounder {
             triggers.add(new ArrayList<>());
         }
         fluent = new boolean[predNames.size()];
+        derived = new boolean[predNames.size()];
+        stratum = new int[predNames.size()];
+        Map<String, Integer> strata = DerivedStrata.of(domain);
+        for (Map.Entry<String, Integer> e : strata.entrySet()) {
+            Integer p = predIds.get(e.getKey());
+            if (p == null) throw new PlanningInputException("derived predicate '" + e.getKey() + "' is not declared");
+            derived[p] = true;
+            fluent[p] = true;
+            stratum[p] = e.getValue();
+        }
         for (Action a : domain.actions()) {
             List<Normalizer.EffectLit> effs = new ArrayList<>();
-            normalizer.effects(a.effects(), Map.of(), effs, new ArrayList<>());
+            List<Normalizer.CondEffect> conds = new ArrayList<>();
+            normalizer.effects(a.effects(), Map.of(), effs, new ArrayList<>(), conds);
+            for (Normalizer.CondEffect c : conds) effs.addAll(c.effects());
             for (Normalizer.EffectLit e : effs) fluent[pred(e.atom())] = true;
         }
         for (Problem.NumericFact f : problem.numericInit()) numeric.put(numericKey(f.function(), f.args()), f.value());
-        for (Action a : domain.actions()) {
-            for (List<Normalizer.Lit> conj : normalizer.dnf(a.precondition())) compileSchema(a, conj);
+        groundFormula = new GroundFormula(this, false);
+        List<Action> schemasToGround = new ArrayList<>(domain.actions());
+        for (Axiom x : domain.axioms()) {
+            // a rule grounds like an action whose only effect is its derived fact
+            List<String> vars = x.parameters().stream().map(TypedName::name).toList();
+            schemasToGround.add(new Action(GroundOp.AXIOM_PREFIX + x.predicate(), x.parameters(), x.body(),
+                    List.of(new PddlEffect.Add(new Formula.Atom(x.predicate(), vars)))));
+        }
+        for (Action a : schemasToGround) {
+            List<List<Normalizer.Lit>> dnf = liftedDnf(a.precondition());
+            if (dnf != null) {
+                for (List<Normalizer.Lit> conj : dnf) compileSchema(a, conj, null);
+            } else {
+                List<Normalizer.Lit> lits = new ArrayList<>();
+                List<Formula> rest = new ArrayList<>();
+                splitConjunction(a.precondition(), lits, rest);
+                compileSchema(a, lits, new Formula.And(rest));
+            }
         }
         for (Formula.Atom a : problem.init()) {
             int p = pred(a);
@@ -82,6 +118,46 @@ final class Grounder {
         }
         for (Schema s : schemas) {
             if (s.fluentLits == 0) join(s, s.emptyBinding(), new boolean[s.pos.length], s.pos.length);
+        }
+    }
+
+    /**
+     * The precondition's disjunctive normal form over the action parameters, or null when it is too
+     * large lifted (a quantifier over many objects around a disjunction): then the operator's
+     * instances evaluate it once its parameters and the static facts are known ({@link GroundFormula}).
+     */
+    private List<List<Normalizer.Lit>> liftedDnf(Formula pre) {
+        boolean quantified = hasQuantifier(pre);
+        try {
+            return new Normalizer(universe, quantified ? LIFTED_QUANTIFIED_DISJUNCTS : Normalizer.MAX_DISJUNCTS).dnf(pre);
+        } catch (PlanningInputException e) {
+            return null;
+        }
+    }
+
+    private static boolean hasQuantifier(Formula f) {
+        if (f instanceof Formula.Forall || f instanceof Formula.Exists) return true;
+        if (f instanceof Formula.Not n) return hasQuantifier(n.body());
+        if (f instanceof Formula.And a) return a.parts().stream().anyMatch(Grounder::hasQuantifier);
+        if (f instanceof Formula.Or o) return o.parts().stream().anyMatch(Grounder::hasQuantifier);
+        if (f instanceof Formula.Imply i) return hasQuantifier(i.condition()) || hasQuantifier(i.consequence());
+        return false;
+    }
+
+    /** The literals of a top-level conjunction (they drive the join) and the other conjuncts. */
+    private static void splitConjunction(Formula f, List<Normalizer.Lit> lits, List<Formula> rest) {
+        if (f instanceof Formula.And a) {
+            for (Formula p : a.parts()) splitConjunction(p, lits, rest);
+        } else if (f instanceof Formula.Atom a) {
+            lits.add(new Normalizer.Lit(a, null, null, true));
+        } else if (f instanceof Formula.Equals e) {
+            lits.add(new Normalizer.Lit(null, e.left(), e.right(), true));
+        } else if (f instanceof Formula.Not n && n.body() instanceof Formula.Atom a) {
+            lits.add(new Normalizer.Lit(a, null, null, false));
+        } else if (f instanceof Formula.Not n && n.body() instanceof Formula.Equals e) {
+            lits.add(new Normalizer.Lit(null, e.left(), e.right(), false));
+        } else {
+            rest.add(f);
         }
     }
 
@@ -106,6 +182,11 @@ final class Grounder {
         k[0] = p;
         System.arraycopy(args, 0, k, 1, args.length);
         return k;
+    }
+
+    /** Whether a fact id (of this grounding) is a derived fact. */
+    boolean isDerivedFact(int fact) {
+        return fact < facts.size() && derived[facts.get(fact)[0]];
     }
 
     boolean isStaticTrue(int pred, int[] args) {
@@ -192,6 +273,9 @@ final class Grounder {
     /** A literal template: predicate and terms (param index >= 0, constant object as -(id+1)). */
     record Tpl(int pred, int[] terms) { }
 
+    /** A conditional effect of a schema: its condition over the parameters and its literal effects. */
+    record CondTpl(Formula condition, Tpl[] add, Tpl[] del) { }
+
     /** A conjunctive case of an action schema, over parameter indexes and constants. */
     final class Schema {
         final int id;
@@ -207,9 +291,16 @@ final class Grounder {
         final Tpl[] del;
         final List<NumericTerm> costs;
         final Map<String, Integer> paramIndex;
+        /** The part of the precondition evaluated per instance ({@link GroundFormula}), or null. */
+        final Formula residual;
+        final List<CondTpl> conds;
+        /** The add templates of all conditional effects (achievers for the reachability explanation). */
+        final Tpl[] condAdd;
 
-        Schema(int id, Action a, List<Normalizer.Lit> conj, List<Normalizer.EffectLit> effs, List<NumericTerm> costs) {
+        Schema(int id, Action a, List<Normalizer.Lit> conj, List<Normalizer.EffectLit> effs, List<NumericTerm> costs,
+               Formula residual, List<Normalizer.CondEffect> condEffects) {
             this.id = id;
+            this.residual = residual;
             this.action = a.name();
             this.params = a.parameters();
             this.costs = costs;
@@ -245,6 +336,20 @@ final class Grounder {
             for (Normalizer.EffectLit el : effs) (el.add() ? ad : de).add(tpl(el.atom()));
             add = ad.toArray(new Tpl[0]);
             del = de.toArray(new Tpl[0]);
+            conds = new ArrayList<>();
+            List<Tpl> ca = new ArrayList<>();
+            for (Normalizer.CondEffect c : condEffects) {
+                List<Tpl> cad = new ArrayList<>();
+                List<Tpl> cde = new ArrayList<>();
+                for (Normalizer.EffectLit el : c.effects()) (el.add() ? cad : cde).add(tpl(el.atom()));
+                conds.add(new CondTpl(c.condition(), cad.toArray(new Tpl[0]), cde.toArray(new Tpl[0])));
+                ca.addAll(cad);
+            }
+            condAdd = ca.toArray(new Tpl[0]);
+        }
+
+        boolean isAdl() {
+            return residual != null || !conds.isEmpty();
         }
 
         int term(String t) {
@@ -269,15 +374,16 @@ final class Grounder {
         }
     }
 
-    private void compileSchema(Action a, List<Normalizer.Lit> conj) {
+    private void compileSchema(Action a, List<Normalizer.Lit> conj, Formula residual) {
         List<Normalizer.EffectLit> effs = new ArrayList<>();
         List<NumericTerm> costs = new ArrayList<>();
-        normalizer.effects(a.effects(), Map.of(), effs, costs);
+        List<Normalizer.CondEffect> conds = new ArrayList<>();
+        normalizer.effects(a.effects(), Map.of(), effs, costs, conds);
         // A conjunction with a literal and its negation can never hold.
         Set<Formula.Atom> positive = new HashSet<>();
         for (Normalizer.Lit l : conj) if (l.atom() != null && l.positive()) positive.add(l.atom());
         for (Normalizer.Lit l : conj) if (l.atom() != null && !l.positive() && positive.contains(l.atom())) return;
-        Schema s = new Schema(schemas.size(), a, conj, effs, costs);
+        Schema s = new Schema(schemas.size(), a, conj, effs, costs, residual, conds);
         schemas.add(s);
         for (int i = 0; i < s.pos.length; i++) {
             if (s.posFluent[i]) triggers.get(s.pos[i].pred).add(new int[] {s.id, i});
@@ -398,19 +504,85 @@ final class Grounder {
         }
         int[] add = new int[s.add.length];
         for (int i = 0; i < add.length; i++) add[i] = factId(s.add[i].pred, args(s.add[i], b));
-        List<Integer> del = new ArrayList<>();
-        for (Tpl t : s.del) {
-            int d = factId(t.pred, args(t, b));
-            boolean added = false;
-            for (int x : add) added |= x == d;
-            if (!added) del.add(d);
-        }
+        int[] del = new int[s.del.length];
+        for (int i = 0; i < del.length; i++) del[i] = factId(s.del[i].pred, args(s.del[i], b));
         double cost = 0;
         for (NumericTerm c : s.costs) cost += cost(c, s, b);
         String[] names = new String[b.length];
         for (int i = 0; i < b.length; i++) names[i] = universe.names.get(b[i]);
-        ops.add(new GroundOp(s.action, names, sortedUnique(pre), sortedUnique(neg), sortedUnique(add), sortedUnique(del), cost));
-        for (int f : add) enqueue(f);
+        if (!s.isAdl()) {
+            addOp(s.action, names, sortedUnique(pre), sortedUnique(neg), add, del, cost, List.of());
+            return;
+        }
+        Map<String, String> binding = new HashMap<>();
+        for (int i = 0; i < b.length; i++) binding.put(s.params.get(i).name(), names[i]);
+        List<GroundFormula.Conj> cases = s.residual == null
+                ? List.of(new GroundFormula.Conj(new int[0], new int[0])) : groundFormula.dnf(s.residual, binding);
+        List<List<GroundFormula.Conj>> condCases = new ArrayList<>();
+        for (CondTpl c : s.conds) condCases.add(groundFormula.dnf(c.condition(), binding));
+        for (GroundFormula.Conj k : cases) {
+            int[] opPre = union(sortedUnique(pre), k.pos());
+            int[] opNeg = union(sortedUnique(neg), k.neg());
+            if (intersects(opPre, opNeg)) continue;
+            List<Integer> allAdd = new ArrayList<>();
+            for (int f : add) allAdd.add(f);
+            List<Integer> allDel = new ArrayList<>();
+            for (int f : del) allDel.add(f);
+            List<GroundOp.When> whens = new ArrayList<>();
+            for (int ci = 0; ci < s.conds.size(); ci++) {
+                CondTpl c = s.conds.get(ci);
+                int[] cAdd = new int[c.add().length];
+                for (int i = 0; i < cAdd.length; i++) cAdd[i] = factId(c.add()[i].pred, args(c.add()[i], b));
+                int[] cDel = new int[c.del().length];
+                for (int i = 0; i < cDel.length; i++) cDel[i] = factId(c.del()[i].pred, args(c.del()[i], b));
+                for (GroundFormula.Conj cc : condCases.get(ci)) {
+                    // the operator's precondition decides parts of the condition
+                    if (intersects(cc.pos(), opNeg) || intersects(cc.neg(), opPre)) continue;
+                    int[] cPre = minus(cc.pos(), opPre);
+                    int[] cNeg = minus(cc.neg(), opNeg);
+                    if (cPre.length == 0 && cNeg.length == 0) {
+                        for (int f : cAdd) allAdd.add(f);
+                        for (int f : cDel) allDel.add(f);
+                    } else {
+                        whens.add(new GroundOp.When(cPre, cNeg, sortedUnique(cAdd), sortedUnique(cDel)));
+                    }
+                }
+            }
+            addOp(s.action, names, opPre, opNeg, allAdd.stream().mapToInt(Integer::intValue).toArray(),
+                    allDel.stream().mapToInt(Integer::intValue).toArray(), cost, whens);
+        }
+    }
+
+    /** Adds the operator (a fact both added and deleted unconditionally is only added) and queues what it can add. */
+    private void addOp(String action, String[] names, int[] pre, int[] neg, int[] add, int[] del, double cost, List<GroundOp.When> whens) {
+        int[] a = sortedUnique(add);
+        int[] d = minus(sortedUnique(del), a);
+        ops.add(new GroundOp(action, names, pre, neg, a, d, cost, whens.isEmpty() ? null : whens.toArray(new GroundOp.When[0]), false));
+        for (int f : a) enqueue(f);
+        for (GroundOp.When w : whens) for (int f : w.add()) enqueue(f);
+    }
+
+    /** Sorted union of two sorted unique arrays. */
+    static int[] union(int[] a, int[] b) {
+        if (b.length == 0) return a;
+        if (a.length == 0) return b;
+        int[] c = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, c, a.length, b.length);
+        return sortedUnique(c);
+    }
+
+    /** Elements of sorted {@code a} not in sorted {@code b}. */
+    static int[] minus(int[] a, int[] b) {
+        if (b.length == 0 || a.length == 0) return a;
+        int[] out = new int[a.length];
+        int n = 0;
+        for (int x : a) if (Arrays.binarySearch(b, x) < 0) out[n++] = x;
+        return n == a.length ? a : Arrays.copyOf(out, n);
+    }
+
+    static boolean intersects(int[] a, int[] b) {
+        for (int x : a) if (Arrays.binarySearch(b, x) >= 0) return true;
+        return false;
     }
 
     private double cost(NumericTerm c, Schema s, int[] b) {

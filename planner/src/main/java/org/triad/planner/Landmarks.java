@@ -21,8 +21,11 @@ final class Landmarks {
     private final int[] mark;
     private int epoch;
 
-    Landmarks(SearchTask t, int[] init, int[] goalPos, long deadline) {
-        int nf = t.numFacts;
+    Landmarks(SearchTask task, int[] init, int[] goalPos, long deadline) {
+        // over the relaxed operators: a conditional achiever needs its condition too
+        RelaxedOps t = task.relaxed;
+        int nf = t.size;
+        int[] relaxedInit = t.initial(init);
         int[][] addOf = invert(t.add, nf);
         lmOfFact = new int[nf];
         Arrays.fill(lmOfFact, -1);
@@ -33,14 +36,14 @@ final class Landmarks {
         for (int g : goalPos) add(g, facts, kids);
         ArrayList<Integer> queue = new ArrayList<>(facts);
         boolean[] reach = new boolean[nf];
-        int[] unsat = new int[t.ops.length];
+        int[] unsat = new int[t.count];
         int[] fifo = new int[nf];
         for (int qi = 0; qi < queue.size() && System.nanoTime() < deadline; qi++) {
             int l = queue.get(qi);
             if (inInit[l]) continue;
-            boolean[] excluded = new boolean[t.ops.length];
+            boolean[] excluded = new boolean[t.count];
             for (int o : addOf[l]) excluded[o] = true;
-            relaxedReach(t, init, excluded, reach, unsat, fifo);
+            relaxedReach(t, relaxedInit, excluded, reach, unsat, fifo);
             int[] shared = null;
             for (int o : addOf[l]) {
                 boolean possible = true;
@@ -51,6 +54,7 @@ final class Landmarks {
             if (shared == null) continue;
             int lmL = lmOfFact[l];
             for (int p : shared) {
+                if (p >= task.numFacts) continue; // a complement: never in a state, so never accepted
                 boolean fresh = lmOfFact[p] < 0;
                 int lp = add(p, facts, kids);
                 if (!kids.get(lp).contains(lmL)) kids.get(lp).add(lmL);
@@ -75,7 +79,7 @@ final class Landmarks {
         return facts.size() - 1;
     }
 
-    private static void relaxedReach(SearchTask t, int[] init, boolean[] excluded, boolean[] reach, int[] unsat, int[] fifo) {
+    private static void relaxedReach(RelaxedOps t, int[] init, boolean[] excluded, boolean[] reach, int[] unsat, int[] fifo) {
         Arrays.fill(reach, false);
         for (int o = 0; o < unsat.length; o++) unsat[o] = t.pre[o].length;
         int head = 0;

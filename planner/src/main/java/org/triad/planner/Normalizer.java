@@ -24,10 +24,23 @@ final class Normalizer {
     /** A literal effect after quantifier expansion. */
     record EffectLit(Formula.Atom atom, boolean add) { }
 
+    /**
+     * A conditional effect after quantifier expansion: the condition and literals still mention the
+     * action parameters (and nothing else free); grounding decides per operator whether it stays conditional.
+     */
+    record CondEffect(Formula condition, List<EffectLit> effects) { }
+
     private final ObjectUniverse universe;
+    private final int maxDisjuncts;
 
     Normalizer(ObjectUniverse universe) {
+        this(universe, MAX_DISJUNCTS);
+    }
+
+    /** {@code maxDisjuncts}: beyond it {@link #dnf} throws {@link PlanningInputException}. */
+    Normalizer(ObjectUniverse universe, int maxDisjuncts) {
         this.universe = universe;
+        this.maxDisjuncts = maxDisjuncts;
     }
 
     List<List<Lit>> dnf(Formula f) {
@@ -103,9 +116,9 @@ final class Normalizer {
         return acc;
     }
 
-    private static List<List<Lit>> cross(List<List<Lit>> a, List<List<Lit>> b) {
-        if ((long) a.size() * b.size() > MAX_DISJUNCTS) {
-            throw new PlanningInputException("formula too large in disjunctive normal form (> " + MAX_DISJUNCTS + " disjuncts)");
+    private List<List<Lit>> cross(List<List<Lit>> a, List<List<Lit>> b) {
+        if ((long) a.size() * b.size() > maxDisjuncts) {
+            throw new PlanningInputException("formula too large in disjunctive normal form (> " + maxDisjuncts + " disjuncts)");
         }
         List<List<Lit>> out = new ArrayList<>(a.size() * b.size());
         for (List<Lit> x : a) {
@@ -119,24 +132,41 @@ final class Normalizer {
         return out;
     }
 
-    private static List<List<Lit>> concat(List<List<Lit>> a, List<List<Lit>> b) {
-        if (a.size() + b.size() > MAX_DISJUNCTS) {
-            throw new PlanningInputException("formula too large in disjunctive normal form (> " + MAX_DISJUNCTS + " disjuncts)");
+    private List<List<Lit>> concat(List<List<Lit>> a, List<List<Lit>> b) {
+        if (a.size() + b.size() > maxDisjuncts) {
+            throw new PlanningInputException("formula too large in disjunctive normal form (> " + maxDisjuncts + " disjuncts)");
         }
         List<List<Lit>> out = new ArrayList<>(a);
         out.addAll(b);
         return out;
     }
 
-    /** Literal effects with {@code forall} expanded; {@code costs} receives the {@code increase} amounts. */
-    void effects(List<PddlEffect> effects, Map<String, String> subst, List<EffectLit> out, List<NumericTerm> costs) {
+    /**
+     * Literal effects with {@code forall} expanded; {@code costs} receives the {@code increase}
+     * amounts, {@code conditional} the {@code when} effects (a nested {@code when} conjoins its condition).
+     */
+    void effects(List<PddlEffect> effects, Map<String, String> subst, List<EffectLit> out, List<NumericTerm> costs,
+                 List<CondEffect> conditional) {
+        effects(effects, subst, null, out, costs, conditional);
+    }
+
+    private void effects(List<PddlEffect> effects, Map<String, String> subst, Formula condition, List<EffectLit> out,
+                         List<NumericTerm> costs, List<CondEffect> conditional) {
         for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.When w) {
+                Formula c = substitute(w.condition(), subst);
+                Formula all = condition == null ? c : new Formula.And(List.of(condition, c));
+                List<EffectLit> body = new ArrayList<>();
+                effects(w.body(), subst, all, body, costs, conditional);
+                if (!body.isEmpty()) conditional.add(new CondEffect(all, body));
+                continue;
+            }
             if (e instanceof PddlEffect.Add a) {
                 out.add(new EffectLit(substitute(a.atom(), subst), true));
             } else if (e instanceof PddlEffect.Delete d) {
                 out.add(new EffectLit(substitute(d.atom(), subst), false));
             } else if (e instanceof PddlEffect.Forall q) {
-                for (Map<String, String> b : bindings(q.variables(), subst)) effects(q.body(), b, out, costs);
+                for (Map<String, String> b : bindings(q.variables(), subst)) effects(q.body(), b, condition, out, costs, conditional);
             } else if (e instanceof PddlEffect.Increase i) {
                 if (!i.function().equals("total-cost")) {
                     throw new PlanningInputException("only (increase (total-cost) ...) is supported, found function '" + i.function() + "'");
@@ -150,6 +180,24 @@ final class Normalizer {
                 costs.add(amount);
             }
         }
+    }
+
+    /** The formula with its free variables replaced (a quantifier's own variables shadow {@code subst}). */
+    static Formula substitute(Formula f, Map<String, String> subst) {
+        if (subst.isEmpty()) return f;
+        if (f instanceof Formula.Atom a) return substitute(a, subst);
+        if (f instanceof Formula.Equals e) return new Formula.Equals(subst.getOrDefault(e.left(), e.left()), subst.getOrDefault(e.right(), e.right()));
+        if (f instanceof Formula.Not n) return new Formula.Not(substitute(n.body(), subst));
+        if (f instanceof Formula.And a) return new Formula.And(a.parts().stream().map(p -> substitute(p, subst)).toList());
+        if (f instanceof Formula.Or o) return new Formula.Or(o.parts().stream().map(p -> substitute(p, subst)).toList());
+        if (f instanceof Formula.Imply i) return new Formula.Imply(substitute(i.condition(), subst), substitute(i.consequence(), subst));
+        boolean universal = f instanceof Formula.Forall;
+        List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
+        Formula body = universal ? ((Formula.Forall) f).body() : ((Formula.Exists) f).body();
+        Map<String, String> inner = new HashMap<>(subst);
+        vars.forEach(v -> inner.remove(v.name()));
+        Formula b = substitute(body, inner);
+        return universal ? new Formula.Forall(vars, b) : new Formula.Exists(vars, b);
     }
 
     private static Formula.Atom substitute(Formula.Atom a, Map<String, String> subst) {

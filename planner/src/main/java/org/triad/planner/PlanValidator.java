@@ -16,7 +16,9 @@ import org.triad.planner.pddl.TypedName;
 
 /**
  * Replays a plan on the lifted domain (independently of the grounder): checks each step's action,
- * argument types and precondition, applies deletes then adds, and checks the goal at the end.
+ * argument types and precondition (any ADL formula), collects the effects whose {@code when}
+ * conditions hold in the state before the step, applies all deletes then all adds, and checks the
+ * goal at the end.
  */
 public final class PlanValidator {
     private PlanValidator() { }
@@ -38,6 +40,13 @@ public final class PlanValidator {
         }
         Set<Formula.Atom> state = new HashSet<>(problem.init());
         Evaluator ev = new Evaluator(universe, state);
+        Map<String, Integer> strata;
+        try {
+            strata = DerivedStrata.of(domain);
+        } catch (PlanningInputException e) {
+            return new Report(false, -1, e.getMessage(), false);
+        }
+        ev.derive(domain, strata);
         for (int i = 0; i < plan.steps().size(); i++) {
             PddlStep step = plan.steps().get(i);
             String where = "step " + (i + 1) + " " + step + ": ";
@@ -64,6 +73,7 @@ public final class PlanValidator {
             ev.effects(a.effects(), binding, adds, dels);
             state.removeAll(dels);
             state.addAll(adds);
+            ev.derive(domain, strata);
         }
         String goalFailure = ev.explainFalse(problem.goal(), Map.of());
         if (goalFailure != null) return new Report(false, -1, "goal not satisfied at the end: " + goalFailure, false);
@@ -83,6 +93,108 @@ public final class PlanValidator {
             List<String> args = new ArrayList<>(a.args().size());
             for (String t : a.args()) args.add(b.getOrDefault(t, t));
             return new Formula.Atom(a.predicate(), args);
+        }
+
+        private static void collect(Formula f, List<Formula.Atom> out) {
+            if (f instanceof Formula.Atom a) out.add(a);
+            else if (f instanceof Formula.Not n) collect(n.body(), out);
+            else if (f instanceof Formula.And a) a.parts().forEach(p -> collect(p, out));
+            else if (f instanceof Formula.Or o) o.parts().forEach(p -> collect(p, out));
+            else if (f instanceof Formula.Imply i) {
+                collect(i.condition(), out);
+                collect(i.consequence(), out);
+            } else if (f instanceof Formula.Forall q) collect(q.body(), out);
+            else if (f instanceof Formula.Exists q) collect(q.body(), out);
+        }
+
+        /** Whether the formula holds (as {@link #explainFalse} without building descriptions). */
+        boolean holds(Formula f, Map<String, String> b) {
+            if (f instanceof Formula.Atom a) return state.contains(ground(a, b));
+            if (f instanceof Formula.Equals e) return b.getOrDefault(e.left(), e.left()).equals(b.getOrDefault(e.right(), e.right()));
+            if (f instanceof Formula.Not n) return !holds(n.body(), b);
+            if (f instanceof Formula.And and) {
+                for (Formula p : and.parts()) if (!holds(p, b)) return false;
+                return true;
+            }
+            if (f instanceof Formula.Or or) {
+                for (Formula p : or.parts()) if (holds(p, b)) return true;
+                return false;
+            }
+            if (f instanceof Formula.Imply i) return !holds(i.condition(), b) || holds(i.consequence(), b);
+            if (f instanceof Formula.Exists e) {
+                // nested exists over a conjunction: bind one variable at a time and test each conjunct
+                // as soon as its variables are bound, instead of enumerating every combination
+                List<TypedName> vars = new ArrayList<>(e.variables());
+                Formula body = e.body();
+                while (body instanceof Formula.Exists inner) {
+                    vars.addAll(inner.variables());
+                    body = inner.body();
+                }
+                List<Formula> conjuncts = body instanceof Formula.And and ? and.parts() : List.of(body);
+                List<java.util.Set<String>> free = new ArrayList<>();
+                for (Formula c : conjuncts) free.add(freeVariables(c));
+                return witness(vars, 0, conjuncts, free, new java.util.HashMap<>(b), new boolean[conjuncts.size()]);
+            }
+            Formula.Forall q = (Formula.Forall) f;
+            for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) {
+                if (!holds(q.body(), nb)) return false;
+            }
+            return true;
+        }
+
+        private boolean witness(List<TypedName> vars, int i, List<Formula> conjuncts, List<java.util.Set<String>> free,
+                                Map<String, String> b, boolean[] checked) {
+            // test the conjuncts whose variables are all bound now
+            List<Integer> now = new ArrayList<>();
+            for (int c = 0; c < conjuncts.size(); c++) {
+                if (checked[c] || !b.keySet().containsAll(free.get(c)) && i < vars.size()) continue;
+                if (!holds(conjuncts.get(c), b)) {
+                    for (int k : now) checked[k] = false;
+                    return false;
+                }
+                checked[c] = true;
+                now.add(c);
+            }
+            boolean found = i == vars.size();
+            if (!found) {
+                TypedName v = vars.get(i);
+                for (int o : universe.ofTypes(v.types())) {
+                    b.put(v.name(), universe.names.get(o));
+                    if (witness(vars, i + 1, conjuncts, free, b, checked)) {
+                        found = true;
+                        break;
+                    }
+                }
+                b.remove(v.name());
+            }
+            for (int k : now) checked[k] = false;
+            return found;
+        }
+
+        /** The variables a formula uses that it does not quantify itself. */
+        private static java.util.Set<String> freeVariables(Formula f) {
+            java.util.Set<String> out = new java.util.HashSet<>();
+            if (f instanceof Formula.Atom a) {
+                for (String t : a.args()) if (t.startsWith("?")) out.add(t);
+            } else if (f instanceof Formula.Equals e) {
+                if (e.left().startsWith("?")) out.add(e.left());
+                if (e.right().startsWith("?")) out.add(e.right());
+            } else if (f instanceof Formula.Not n) {
+                out.addAll(freeVariables(n.body()));
+            } else if (f instanceof Formula.And a) {
+                a.parts().forEach(p -> out.addAll(freeVariables(p)));
+            } else if (f instanceof Formula.Or o) {
+                o.parts().forEach(p -> out.addAll(freeVariables(p)));
+            } else if (f instanceof Formula.Imply i) {
+                out.addAll(freeVariables(i.condition()));
+                out.addAll(freeVariables(i.consequence()));
+            } else {
+                boolean universal = f instanceof Formula.Forall;
+                List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
+                out.addAll(freeVariables(universal ? ((Formula.Forall) f).body() : ((Formula.Exists) f).body()));
+                vars.forEach(v -> out.remove(v.name()));
+            }
+            return out;
         }
 
         /** Null when the formula holds, else a description of a false part. */
@@ -128,12 +240,50 @@ public final class PlanValidator {
             return universal ? null : "no witness for " + PddlWriter.formula(f);
         }
 
+        /**
+         * Recomputes the derived atoms from the basic ones: stratum by stratum, every rule instance
+         * over the typed objects, until nothing new holds.
+         */
+        void derive(Domain domain, Map<String, Integer> strata) {
+            if (strata.isEmpty()) return;
+            state.removeIf(a -> strata.containsKey(a.predicate()));
+            int top = strata.values().stream().mapToInt(Integer::intValue).max().orElse(0);
+            for (int s = 0; s <= top; s++) {
+                // a stratum whose rules read no derived predicate of their own stratum needs one pass
+                boolean recursive = false;
+                for (org.triad.planner.pddl.Axiom x : domain.axioms()) {
+                    if (strata.get(x.predicate()) != s) continue;
+                    List<Formula.Atom> atoms = new ArrayList<>();
+                    collect(x.body(), atoms);
+                    for (Formula.Atom at : atoms) recursive |= Integer.valueOf(s).equals(strata.get(at.predicate()));
+                }
+                boolean changed = true;
+                while (changed) {
+                    changed = false;
+                    for (org.triad.planner.pddl.Axiom x : domain.axioms()) {
+                        if (strata.get(x.predicate()) != s) continue;
+                        for (Map<String, String> b : new Normalizer(universe).bindings(x.parameters(), Map.of())) {
+                            List<String> args = new ArrayList<>();
+                            for (TypedName p : x.parameters()) args.add(b.get(p.name()));
+                            Formula.Atom head = new Formula.Atom(x.predicate(), args);
+                            if (state.contains(head) || !holds(x.body(), b)) continue;
+                            state.add(head);
+                            changed = recursive;
+                        }
+                    }
+                }
+            }
+        }
+
         void effects(List<PddlEffect> effects, Map<String, String> b, List<Formula.Atom> adds, List<Formula.Atom> dels) {
             for (PddlEffect e : effects) {
                 if (e instanceof PddlEffect.Add a) adds.add(ground(a.atom(), b));
                 else if (e instanceof PddlEffect.Delete d) dels.add(ground(d.atom(), b));
                 else if (e instanceof PddlEffect.Forall q) {
                     for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels);
+                } else if (e instanceof PddlEffect.When w) {
+                    // the state is still the one before the action: all effects are collected before any applies
+                    if (holds(w.condition(), b)) effects(w.body(), b, adds, dels);
                 }
             }
         }

@@ -33,11 +33,13 @@ final class ReachabilityExplainer {
     }
 
     /** Fluent facts reachable from {@code init} ignoring deletes, over the grounded actions. */
-    static boolean[] relaxedReach(SearchTask t, int[] init) {
-        boolean[] reach = new boolean[t.numFacts];
-        int[] unsat = new int[t.ops.length];
+    static boolean[] relaxedReach(SearchTask task, int[] init) {
+        RelaxedOps t = task.relaxed;
+        boolean[] reach = new boolean[t.size];
+        int[] unsat = new int[t.count];
         for (int o = 0; o < unsat.length; o++) unsat[o] = t.pre[o].length;
-        int[] fifo = new int[t.numFacts];
+        int[] fifo = new int[t.size];
+        init = t.initial(init);
         int tail = 0;
         for (int f : init) if (!reach[f]) { reach[f] = true; fifo[tail++] = f; }
         for (int o : t.noPre) for (int a : t.add[o]) if (!reach[a]) { reach[a] = true; fifo[tail++] = a; }
@@ -68,11 +70,14 @@ final class ReachabilityExplainer {
             closest.clear();
             closestMissing = Integer.MAX_VALUE;
             for (Grounder.Schema s : g.schemas()) {
-                for (Grounder.Tpl add : s.add) {
-                    if (add.pred() != n.pred) continue;
-                    int[] b = s.emptyBinding();
-                    if (!bind(s, add, n.args, b)) continue;
-                    enumerate(s, b, 0);
+                // conditional adds count as achievers too (their conditions are not followed: a relaxation)
+                for (Grounder.Tpl[] adds : new Grounder.Tpl[][] {s.add, s.condAdd}) {
+                    for (Grounder.Tpl add : adds) {
+                        if (add.pred() != n.pred) continue;
+                        int[] b = s.emptyBinding();
+                        if (!bind(s, add, n.args, b)) continue;
+                        enumerate(s, b, 0);
+                    }
                 }
             }
             // follow only the achievers that lack the fewest facts: the others are further away

@@ -14,6 +14,18 @@ final class SearchTask {
     final int[][] neg;
     final int[][] add;
     final int[][] del;
+    /** Conditional effects per operator, null for an operator without any. */
+    final GroundOp.When[][] when;
+    /** Whether any operator has conditional effects (then the special STRIPS searches do not apply). */
+    final boolean hasConditionalEffects;
+    /** The operators as the delete relaxation sees them (conditional effects split off). */
+    final RelaxedOps relaxed;
+    /** The rules of derived predicates, null without any (then states hold basic facts only). */
+    final Axioms axioms;
+
+    int ruleCount() {
+        return axioms == null ? 0 : axioms.head.length;
+    }
     /** Operators having the fact as a positive precondition. */
     final int[][] preOf;
     /** Operators triggered for applicability tests by their first precondition. */
@@ -53,12 +65,26 @@ final class SearchTask {
     SearchTask(Grounder grounder, List<GroundOp> opList, int numFacts) {
         this.grounder = grounder;
         this.numFacts = numFacts;
-        ops = opList.toArray(new GroundOp[0]);
+        List<GroundOp> actions = new ArrayList<>(opList.size());
+        List<GroundOp> rules = new ArrayList<>();
+        for (GroundOp o : opList) (o.isAxiom() ? rules : actions).add(o);
+        if (rules.isEmpty()) {
+            axioms = null;
+        } else {
+            boolean[] derivedFact = new boolean[numFacts];
+            for (int f = 0; f < numFacts; f++) derivedFact[f] = grounder.isDerivedFact(f);
+            List<Integer> strata = new ArrayList<>(rules.size());
+            for (GroundOp r : rules) strata.add(grounder.stratum[grounder.facts.get(r.add()[0])[0]]);
+            axioms = new Axioms(rules, strata, derivedFact);
+        }
+        ops = actions.toArray(new GroundOp[0]);
         int n = ops.length;
         pre = new int[n][];
         neg = new int[n][];
         add = new int[n][];
         del = new int[n][];
+        when = new GroundOp.When[n][];
+        boolean conditional = false;
         int[] preCount = new int[numFacts];
         int[] firstCount = new int[numFacts];
         List<Integer> none = new ArrayList<>();
@@ -67,6 +93,8 @@ final class SearchTask {
             neg[o] = ops[o].neg();
             add[o] = ops[o].add();
             del[o] = ops[o].del();
+            when[o] = ops[o].when();
+            conditional |= when[o] != null;
             for (int f : pre[o]) preCount[f]++;
             if (pre[o].length == 0) none.add(o); else firstCount[pre[o][0]]++;
         }
@@ -83,6 +111,20 @@ final class SearchTask {
             if (pre[o].length > 0) firstPreOf[pre[o][0]][fill2[pre[o][0]]++] = o;
         }
         noPre = none.stream().mapToInt(Integer::intValue).toArray();
+        hasConditionalEffects = conditional;
+        relaxed = new RelaxedOps(this);
+    }
+
+    /** Per operator, its unconditional adds (or deletes) followed by its conditional ones. */
+    private int[][] withConditional(int[][] lists, boolean adds) {
+        if (!hasConditionalEffects) return lists;
+        int[][] out = new int[lists.length][];
+        for (int o = 0; o < lists.length; o++) {
+            out[o] = lists[o];
+            if (when[o] == null) continue;
+            for (GroundOp.When w : when[o]) out[o] = Grounder.union(out[o], adds ? w.add() : w.del());
+        }
+        return out;
     }
 
     private static int[][] invert(int[][] lists, int numFacts) {
@@ -102,9 +144,11 @@ final class SearchTask {
      * heuristic only need these.
      */
     synchronized SearchTask relevantTo(int[] goalPos, int[] goalNeg) {
+        // a rule's negative conditions make every fact it reads matter both ways: keep the whole task
+        if (axioms != null) return this;
         if (addOf == null) {
-            addOf = invert(add, numFacts);
-            delOf = invert(del, numFacts);
+            addOf = invert(withConditional(add, true), numFacts);
+            delOf = invert(withConditional(del, false), numFacts);
         }
         boolean[] posRel = new boolean[numFacts];
         boolean[] negRel = new boolean[numFacts];
@@ -123,6 +167,16 @@ final class SearchTask {
                 count++;
                 for (int p : pre[o]) if (!posRel[p]) { posRel[p] = true; stack[sp++] = p; }
                 for (int p : neg[o]) if (!negRel[p]) { negRel[p] = true; stack[sp++] = ~p; }
+                if (when[o] == null) continue;
+                // a condition's facts must keep their values exactly, so both their achievers and deleters stay
+                for (GroundOp.When w : when[o]) {
+                    for (int[] facts : new int[][] {w.pre(), w.neg()}) {
+                        for (int p : facts) {
+                            if (!posRel[p]) { posRel[p] = true; stack[sp++] = p; }
+                            if (!negRel[p]) { negRel[p] = true; stack[sp++] = ~p; }
+                        }
+                    }
+                }
             }
         }
         if (count == ops.length) return this;

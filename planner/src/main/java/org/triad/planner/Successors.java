@@ -48,6 +48,16 @@ final class Successors {
     int[] apply(int[] state, int o) {
         int[] del = t.del[o];
         int[] add = t.add[o];
+        GroundOp.When[] when = t.when[o];
+        if (when != null) {
+            // every condition is evaluated in the state before the operator; then deletes, then adds
+            for (GroundOp.When w : when) {
+                if (!satisfies(state, w.pre(), w.neg())) continue;
+                add = Grounder.union(add, w.add());
+                del = Grounder.union(del, w.del());
+            }
+            del = Grounder.minus(del, add);
+        }
         int[] out = new int[state.length + add.length];
         int n = 0;
         int i = 0;
@@ -65,7 +75,8 @@ final class Successors {
             }
             out[n++] = next;
         }
-        return n == out.length ? out : Arrays.copyOf(out, n);
+        int[] next = n == out.length ? out : Arrays.copyOf(out, n);
+        return t.axioms == null ? next : t.axioms.close(next);
     }
 
     static boolean satisfies(int[] state, int[] goalPos, int[] goalNeg) {

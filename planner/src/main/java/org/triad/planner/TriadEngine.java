@@ -195,7 +195,7 @@ public final class TriadEngine implements PddlPlanner {
             plan = new PlanImprover(task, h, succ, until, effort, evaluations).improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
         }
         List<PddlStep> steps = new ArrayList<>(plan.length);
-        for (int o : plan) steps.add(task.ops[o].toAction());
+        for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
     }
 

@@ -11,7 +11,7 @@ final class UnaryGraphSearch {
     private UnaryGraphSearch() { }
 
     static boolean applies(SearchTask t, int[] goalPos, int[] goalNeg) {
-        if (goalPos.length != 1 || goalNeg.length != 0 || t.noPre.length != 0) return false;
+        if (goalPos.length != 1 || goalNeg.length != 0 || t.noPre.length != 0 || t.hasConditionalEffects || t.axioms != null) return false;
         for (int o = 0; o < t.ops.length; o++) {
             if (t.pre[o].length != 1 || t.neg[o].length != 0) return false;
         }

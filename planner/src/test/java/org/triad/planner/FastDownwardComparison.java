@@ -43,18 +43,25 @@ public final class FastDownwardComparison {
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout);
         System.out.println("| problem | Triad s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |");
         System.out.println("|---|---|---|---|---|---|---|---|");
+        List<String> notes = new ArrayList<>();
         for (int i = 3; i < args.length; i++) {
             Path problemFile = root.resolve(args[i]);
             Path domainFile = IpcCorpusCheck.domainOf(problemFile);
-            Domain domain = PddlParser.parseDomain(domainFile);
-            Problem problem = PddlParser.parseProblem(problemFile);
+            Domain domain = null;
+            Problem problem = null;
+            try {
+                domain = PddlParser.parseDomain(domainFile);
+                problem = PddlParser.parseProblem(problemFile);
+            } catch (org.triad.planner.pddl.PddlParseException e) {
+                // Fast Downward still runs; its plan cannot be replayed on a domain Triad does not read
+            }
             Path triadPlan = work.resolve("triad.plan");
             Path fdPlan = work.resolve("fd.plan");
             Files.deleteIfExists(triadPlan);
             Files.deleteIfExists(fdPlan);
             String cp = String.join(java.io.File.pathSeparator, java.util.Arrays.stream(System.getProperty("java.class.path")
                     .split(java.io.File.pathSeparator)).map(e -> Path.of(e).toAbsolutePath().toString()).toList());
-            double triadS = run(work, timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
+            double triadS = run(work, "triad.log", timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
                     SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout)));
             Path cachedPlan = fdCache == null ? null : fdCache.resolve(args[i] + ".plan");
             Path cachedSeconds = fdCache == null ? null : fdCache.resolve(args[i] + ".seconds");
@@ -64,7 +71,7 @@ public final class FastDownwardComparison {
                 fdS = text.equals("timeout") ? Double.NaN : Double.parseDouble(text);
                 if (Files.exists(cachedPlan)) Files.copy(cachedPlan, fdPlan);
             } else {
-                fdS = run(work, timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
+                fdS = run(work, "fd.log", timeout, List.of("python3", fd, "--alias", "lama-first", "--overall-time-limit", (int) timeout + "s",
                         "--plan-file", fdPlan.toString(), domainFile.toString(), problemFile.toString()));
                 if (cachedSeconds != null) {
                     Files.createDirectories(cachedSeconds.getParent());
@@ -77,6 +84,7 @@ public final class FastDownwardComparison {
             String ratio = t[0].equals("-") || f[0].equals("-") ? "-" : String.format("%.2f", Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
             if (!ratio.equals("-")) ratios.add(Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
             System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio);
+            if (t[0].equals("-")) notes.add(args[i] + ": " + (Double.isNaN(triadS) ? "killed at the cap" : firstLine(work.resolve("triad.log"))));
         }
         java.util.Collections.sort(ratios);
         if (!ratios.isEmpty()) {
@@ -85,6 +93,18 @@ public final class FastDownwardComparison {
             long above = ratios.stream().filter(r -> r > 1.1 + 1e-9).count();
             System.out.printf("%nmedian length ratio %.2f over %d problems both solved; %d above 1.1%n", median, n, above);
         }
+        if (!notes.isEmpty()) {
+            System.out.println();
+            System.out.println("Triad without a plan:");
+            for (String n : notes) System.out.println("- " + n);
+        }
+    }
+
+    /** The first line of Triad's output (its status and reason when it found no plan), shortened. */
+    private static String firstLine(Path log) throws IOException {
+        String text = Files.exists(log) ? Files.readString(log).strip() : "";
+        String line = text.isEmpty() ? "(no output)" : text.lines().findFirst().orElse("");
+        return line.length() > 240 ? line.substring(0, 240) + "..." : line;
     }
 
     private static String seconds(double s, String[] check) {
@@ -92,10 +112,10 @@ public final class FastDownwardComparison {
     }
 
     /** Wall seconds of the process, NaN if it hit the cap. */
-    private static double run(Path dir, double timeout, List<String> command) throws IOException, InterruptedException {
+    private static double run(Path dir, String log, double timeout, List<String> command) throws IOException, InterruptedException {
         long t0 = System.nanoTime();
         Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("log.txt").toFile()).start();
+                .redirectOutput(dir.resolve(log).toFile()).start();
         if (!p.waitFor((long) (timeout * 1000) + 5000, TimeUnit.MILLISECONDS)) {
             p.descendants().forEach(ProcessHandle::destroyForcibly);
             p.destroyForcibly();
@@ -109,6 +129,7 @@ public final class FastDownwardComparison {
     private static String[] check(Domain domain, Problem problem, Path plan) throws IOException {
         if (!Files.exists(plan)) return new String[] {"-", "-"};
         PddlPlan p = ExternalPlanner.parsePlan(Files.readString(plan));
+        if (domain == null) return new String[] {Integer.toString(p.length()), "not checked"};
         return new String[] {Integer.toString(p.length()), PlanValidator.validate(domain, problem, p).valid() ? "yes" : "NO"};
     }
 }

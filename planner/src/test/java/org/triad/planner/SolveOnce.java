@@ -3,6 +3,7 @@ package org.triad.planner;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import org.triad.planner.pddl.PddlParseException;
 import org.triad.planner.pddl.PddlParser;
 
 /**
@@ -12,8 +13,15 @@ import org.triad.planner.pddl.PddlParser;
  */
 public final class SolveOnce {
     public static void main(String[] args) throws Exception {
-        SolveResult r = new TriadEngine().solve(PddlParser.parseDomain(Path.of(args[0])), PddlParser.parseProblem(Path.of(args[1])),
-                Duration.ofMillis((long) (Double.parseDouble(args[3]) * 1000)));
+        SolveResult r;
+        try {
+            r = new TriadEngine().solve(PddlParser.parseDomain(Path.of(args[0])), PddlParser.parseProblem(Path.of(args[1])),
+                    Duration.ofMillis((long) (Double.parseDouble(args[3]) * 1000)));
+        } catch (PddlParseException e) {
+            System.err.println("PARSE ERROR: " + e.getMessage());
+            System.exit(1);
+            return;
+        }
         if (!r.isSolved()) {
             System.err.println(r.status() + ": " + r.message());
             System.exit(1);

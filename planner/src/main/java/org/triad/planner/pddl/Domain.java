@@ -4,10 +4,11 @@ import java.util.List;
 
 /**
  * A PDDL domain. {@code types} lists each declared type with its parent(s) (undeclared parents
- * default to {@code object}); {@code functions} are only carried for action costs.
+ * default to {@code object}); {@code functions} are only carried for action costs; {@code axioms}
+ * are the rules of derived predicates.
  */
 public record Domain(String name, List<String> requirements, List<TypedName> types, List<TypedName> constants,
-                     List<PredicateDecl> predicates, List<PredicateDecl> functions, List<Action> actions) {
+                     List<PredicateDecl> predicates, List<PredicateDecl> functions, List<Action> actions, List<Axiom> axioms) {
     public Domain {
         requirements = List.copyOf(requirements);
         types = List.copyOf(types);
@@ -15,6 +16,13 @@ public record Domain(String name, List<String> requirements, List<TypedName> typ
         predicates = List.copyOf(predicates);
         functions = List.copyOf(functions);
         actions = List.copyOf(actions);
+        axioms = List.copyOf(axioms);
+    }
+
+    /** A domain without derived predicates. */
+    public Domain(String name, List<String> requirements, List<TypedName> types, List<TypedName> constants,
+                  List<PredicateDecl> predicates, List<PredicateDecl> functions, List<Action> actions) {
+        this(name, requirements, types, constants, predicates, functions, actions, List.of());
     }
 
     public Action action(String actionName) {

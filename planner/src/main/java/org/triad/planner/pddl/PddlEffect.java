@@ -2,8 +2,8 @@ package org.triad.planner.pddl;
 
 import java.util.List;
 
-/** An action effect: literals, unconditional {@code forall} and {@code increase (total-cost)}. */
-public sealed interface PddlEffect permits PddlEffect.Add, PddlEffect.Delete, PddlEffect.Forall, PddlEffect.Increase {
+/** An action effect: literals, {@code forall}, conditional ({@code when}) effects and {@code increase (total-cost)}. */
+public sealed interface PddlEffect permits PddlEffect.Add, PddlEffect.Delete, PddlEffect.Forall, PddlEffect.When, PddlEffect.Increase {
 
     record Add(Formula.Atom atom) implements PddlEffect { }
 
@@ -14,6 +14,11 @@ public sealed interface PddlEffect permits PddlEffect.Add, PddlEffect.Delete, Pd
             variables = List.copyOf(variables);
             body = List.copyOf(body);
         }
+    }
+
+    /** {@code (when CONDITION EFFECT)}: the body applies only if the condition holds in the state before the action. */
+    record When(Formula condition, List<PddlEffect> body) implements PddlEffect {
+        public When { body = List.copyOf(body); }
     }
 
     /**

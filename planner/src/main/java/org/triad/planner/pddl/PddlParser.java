@@ -10,7 +10,8 @@ import java.util.Set;
 
 /**
  * Parses PDDL domains and problems (STRIPS, typing incl. {@code either}, negative preconditions,
- * equality, disjunctive/quantified preconditions, unconditional {@code forall} effects, action costs).
+ * equality, disjunctive/quantified preconditions and goals, {@code forall} and conditional
+ * ({@code when}) effects, action costs: PDDL's ADL subset).
  * Every syntax error is a {@link PddlParseException} with {@code line:col}.
  */
 public final class PddlParser {
@@ -71,6 +72,8 @@ public final class PddlParser {
         List<PredicateDecl> functions = new ArrayList<>();
         List<Action> actions = new ArrayList<>();
         List<SExpr> actionExprs = new ArrayList<>();
+        List<Axiom> axioms = new ArrayList<>();
+        List<SExpr> axiomExprs = new ArrayList<>();
         for (SExpr sec : items.subList(2, items.size())) {
             String head = sec.head();
             if (head == null) throw err(sec, "expected a domain section such as '(:predicates ...)'");
@@ -92,7 +95,11 @@ public final class PddlParser {
                     actions.add(action(sec));
                     actionExprs.add(sec);
                 }
-                case ":derived", ":durative-action" -> throw err(sec, head + " is not supported (STRIPS/ADL subset only)");
+                case ":derived" -> {
+                    axioms.add(axiom(sec));
+                    axiomExprs.add(sec);
+                }
+                case ":durative-action" -> throw err(sec, head + " is not supported (durative actions)");
                 default -> throw err(sec, "unknown domain section '" + head + "'");
             }
         }
@@ -103,16 +110,33 @@ public final class PddlParser {
         Set<String> declared = new HashSet<>();
         preds.forEach(p -> declared.add(p.name()));
         for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
-        return new Domain(name, reqs, types, constants, preds, functions, actions);
+        Set<String> effectPredicates = new HashSet<>();
+        for (Action a : actions) {
+            List<Formula.Atom> atoms = new ArrayList<>();
+            collectEffectAtomsOnly(a.effects(), atoms);
+            atoms.forEach(at -> effectPredicates.add(at.predicate()));
+        }
+        for (int i = 0; i < axioms.size(); i++) {
+            Axiom ax = axioms.get(i);
+            SExpr at = axiomExprs.get(i);
+            if (!declared.contains(ax.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' is not declared in :predicates");
+            if (effectPredicates.contains(ax.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' is changed by an action effect");
+            List<Formula.Atom> atoms = new ArrayList<>();
+            collectAtoms(ax.body(), atoms);
+            for (Formula.Atom a : atoms) {
+                if (!declared.contains(a.predicate())) throw err(at, "derived predicate '" + ax.predicate() + "' uses undeclared predicate '" + a.predicate() + "'");
+            }
+        }
+        return new Domain(name, reqs, types, constants, preds, functions, actions, axioms);
     }
 
-    /** Requirements the parser and engine handle; {@code :adl} and {@code :conditional-effects} are read, {@code when} itself is checked where it occurs. */
+    /** Requirements the parser and engine handle. */
     static final Set<String> SUPPORTED_REQUIREMENTS = Set.of(":strips", ":typing", ":negative-preconditions",
             ":disjunctive-preconditions", ":equality", ":existential-preconditions", ":universal-preconditions",
-            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs");
+            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs", ":derived-predicates");
     /** Requirements of PDDL 1.2-3.1 that this planner does not handle (it would plan wrongly if it ignored them). */
     static final Set<String> UNSUPPORTED_REQUIREMENTS = Set.of(":numeric-fluents", ":fluents", ":object-fluents",
-            ":durative-actions", ":duration-inequalities", ":continuous-effects", ":derived-predicates",
+            ":durative-actions", ":duration-inequalities", ":continuous-effects",
             ":timed-initial-literals", ":preferences", ":constraints", ":time", ":expression-evaluation",
             ":domain-axioms", ":safety-constraints", ":open-world", ":true-negation", ":ucpop", ":foreach-expansions",
             ":dag-expansions", ":subgoal-through-axioms", ":action-expansions");
@@ -172,7 +196,37 @@ public final class PddlParser {
             if (e instanceof PddlEffect.Add a) out.add(a.atom());
             else if (e instanceof PddlEffect.Delete d) out.add(d.atom());
             else if (e instanceof PddlEffect.Forall q) collectEffectAtoms(q.body(), out);
+            else if (e instanceof PddlEffect.When w) {
+                collectAtoms(w.condition(), out);
+                collectEffectAtoms(w.body(), out);
+            }
         }
+    }
+
+    private static void collectEffectAtomsOnly(List<PddlEffect> effects, List<Formula.Atom> out) {
+        for (PddlEffect e : effects) {
+            if (e instanceof PddlEffect.Add a) out.add(a.atom());
+            else if (e instanceof PddlEffect.Delete d) out.add(d.atom());
+            else if (e instanceof PddlEffect.Forall q) collectEffectAtomsOnly(q.body(), out);
+            else if (e instanceof PddlEffect.When w) collectEffectAtomsOnly(w.body(), out);
+        }
+    }
+
+    /** {@code (:derived (PREDICATE ?x - t ...) BODY)}: the body may only use the head's variables (and its own quantified ones). */
+    private Axiom axiom(SExpr sec) {
+        List<SExpr> it = sec.items;
+        if (it.size() != 3) throw err(sec, "expected '(:derived (PREDICATE PARAMETERS) FORMULA)'");
+        List<SExpr> h = list(it.get(1), "'(PREDICATE PARAMETERS)'");
+        if (h.isEmpty()) throw err(it.get(1), "empty derived predicate head");
+        String pred = name(h.get(0), "a predicate name");
+        List<TypedName> params = typedList(h.subList(1, h.size()), "object", true);
+        Set<String> vars = new HashSet<>();
+        for (TypedName p : params) {
+            if (!vars.add(p.name())) throw err(it.get(1), "parameter '" + p.name() + "' is declared twice in derived predicate '" + pred + "'");
+        }
+        Formula body = formula(it.get(2));
+        checkVariables(body, vars, sec, "derived predicate " + pred);
+        return new Axiom(pred, params, body);
     }
 
     private PredicateDecl predicateDecl(SExpr p) {
@@ -262,6 +316,10 @@ public final class PddlParser {
             if (e instanceof PddlEffect.Add a) a.atom().args().forEach(x -> checkVar(x, bound, at, action));
             else if (e instanceof PddlEffect.Delete d) d.atom().args().forEach(x -> checkVar(x, bound, at, action));
             else if (e instanceof PddlEffect.Forall q) collectEffectAtomsBound(q.body(), extend(bound, q.variables()), at, action);
+            else if (e instanceof PddlEffect.When w) {
+                checkVariables(w.condition(), bound, at, action);
+                collectEffectAtomsBound(w.body(), bound, at, action);
+            }
         }
     }
 
@@ -273,7 +331,8 @@ public final class PddlParser {
 
     private void checkVar(String term, Set<String> bound, SExpr at, String action) {
         if (term.startsWith("?") && !bound.contains(term)) {
-            throw err(at, "variable '" + term + "' is not a parameter of action '" + action + "'");
+            String owner = action.startsWith("derived predicate ") ? "derived predicate '" + action.substring(18) + "'" : "action '" + action + "'";
+            throw err(at, "variable '" + term + "' is not a parameter of " + owner);
         }
     }
 
@@ -341,8 +400,15 @@ public final class PddlParser {
                 List<TypedName> vars = typedList(list(args.get(0), "a variable list"), "object", true);
                 return List.of(new PddlEffect.Forall(vars, effect(args.get(1))));
             }
-            case "when":
-                throw err(e, "conditional effects ('when') are not supported");
+            case "when": {
+                if (args.size() != 2) throw err(e, "'when' takes a condition and an effect");
+                Formula condition = args.get(0).isList() && args.get(0).items.isEmpty() ? new Formula.And(List.of()) : formula(args.get(0));
+                List<PddlEffect> body = effect(args.get(1));
+                for (PddlEffect b : body) {
+                    if (b instanceof PddlEffect.Increase) throw err(args.get(1), "'increase' inside 'when' is not supported (action costs must not depend on the state)");
+                }
+                return List.of(new PddlEffect.When(condition, body));
+            }
             case "increase": {
                 if (args.size() != 2) throw err(e, "'increase' takes a function and an amount");
                 List<SExpr> f = list(args.get(0), "a function term such as (total-cost)");

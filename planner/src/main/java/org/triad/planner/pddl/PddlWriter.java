@@ -27,6 +27,11 @@ public final class PddlWriter {
             sb.append("    :precondition ").append(formula(a.precondition())).append('\n');
             sb.append("    :effect ").append(effects(a.effects())).append(")\n");
         }
+        for (Axiom x : d.axioms()) {
+            sb.append("  (:derived (").append(x.predicate());
+            if (!x.parameters().isEmpty()) sb.append(' ').append(typed(x.parameters()));
+            sb.append(")\n    ").append(formula(x.body())).append(")\n");
+        }
         return sb.append(")\n").toString();
     }
 
@@ -109,6 +114,7 @@ public final class PddlWriter {
         if (e instanceof PddlEffect.Add a) return atom(a.atom());
         if (e instanceof PddlEffect.Delete d) return "(not " + atom(d.atom()) + ")";
         if (e instanceof PddlEffect.Forall q) return "(forall (" + typed(q.variables()) + ") " + effects(q.body()) + ")";
+        if (e instanceof PddlEffect.When w) return "(when " + formula(w.condition()) + " " + effects(w.body()) + ")";
         PddlEffect.Increase i = (PddlEffect.Increase) e;
         return "(increase (" + i.function() + ") " + numeric(i.amount()) + ")";
     }

@@ -90,14 +90,81 @@ class PddlParserTest {
     }
 
     @Test
-    void rejectsConditionalEffectsClearly() {
+    void readsConditionalEffectsInsideForall() {
+        Domain d = PddlParser.parseDomain("""
+                (define (domain x) (:requirements :adl) (:types item) (:predicates (p ?i - item) (q ?i - item) (r))
+                  (:action a :parameters () :precondition ()
+                    :effect (forall (?i - item) (when (and (p ?i) (not (r))) (and (q ?i) (not (p ?i)))))))""", "x.pddl");
+        PddlEffect.Forall all = (PddlEffect.Forall) d.action("a").effects().get(0);
+        PddlEffect.When when = (PddlEffect.When) all.body().get(0);
+        assertEquals(new Formula.And(List.of(Formula.Atom.of("p", "?i"), new Formula.Not(Formula.Atom.of("r")))), when.condition());
+        assertEquals(List.of(new PddlEffect.Add(Formula.Atom.of("q", "?i")), new PddlEffect.Delete(Formula.Atom.of("p", "?i"))), when.body());
+    }
+
+    @Test
+    void rejectsMalformedAdlFormulasWithTheirPosition() {
         PddlParseException e = domainError("""
                 (define (domain x) (:predicates (p) (q))
                   (:action a :parameters () :precondition ()
-                    :effect (when (p) (q))))""");
-        assertEquals(3, e.line());
-        assertEquals(13, e.column());
-        assertTrue(e.detail().contains("conditional effects ('when') are not supported"));
+                    :effect (when (p))))""");
+        assertEquals("bad.pddl:3:13: 'when' takes a condition and an effect", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q))
+                  (:action a :parameters () :precondition (forall (?x) (p ?x) (q))
+                    :effect (q)))""");
+        assertEquals("bad.pddl:2:43: 'forall' takes a variable list and a formula", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q))
+                  (:action a :parameters () :precondition (exists ?x (p ?x))
+                    :effect (q)))""");
+        assertEquals("bad.pddl:2:51: expected a variable list in parentheses, found '?x'", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p) (q))
+                  (:action a :parameters () :precondition (imply (p))
+                    :effect (q)))""");
+        assertEquals("bad.pddl:2:43: 'imply' takes exactly two formulas", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p) (q))
+                  (:action a :parameters () :precondition (and (q) (when (p) (q)))
+                    :effect (q)))""");
+        assertEquals("bad.pddl:2:52: 'when' is an effect, not a formula", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p) (q))
+                  (:action a :parameters () :precondition ()
+                    :effect (when (p) (or (q) (p)))))""");
+        assertEquals("bad.pddl:3:23: expected an atom in an effect", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q))
+                  (:action a :parameters () :precondition ()
+                    :effect (when (p ?y) (q))))""");
+        assertEquals("bad.pddl:2:3: variable '?y' is not a parameter of action 'a'", e.getMessage());
+    }
+
+    @Test
+    void readsDerivedPredicatesAndRejectsBadRulesWithTheirPosition() {
+        Domain d = PddlParser.parseDomain("""
+                (define (domain x) (:requirements :derived-predicates) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?x))
+                  (:action a :parameters (?x) :precondition (q ?x) :effect (not (p ?x))))""", "x.pddl");
+        assertEquals(List.of(new Axiom("q", List.of(TypedName.of("?x", "object")), Formula.Atom.of("p", "?x"))), d.axioms());
+        assertEquals(d, PddlParser.parseDomain(PddlWriter.write(d), "written.pddl"));
+        PddlParseException e = domainError("""
+                (define (domain x) (:predicates (p ?x))
+                  (:derived (q ?x) (p ?x)))""");
+        assertEquals("bad.pddl:2:3: derived predicate 'q' is not declared in :predicates", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?x))
+                  (:action a :parameters (?x) :effect (q ?x)))""");
+        assertEquals("bad.pddl:2:3: derived predicate 'q' is changed by an action effect", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x) (p ?y)))""");
+        assertEquals("bad.pddl:2:3: variable '?y' is not a parameter of derived predicate 'q'", e.getMessage());
+        e = domainError("""
+                (define (domain x) (:predicates (p ?x) (q ?x))
+                  (:derived (q ?x)))""");
+        assertEquals("bad.pddl:2:3: expected '(:derived (PREDICATE PARAMETERS) FORMULA)'", e.getMessage());
     }
 
     @Test
