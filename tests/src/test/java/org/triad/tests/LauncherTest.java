@@ -66,7 +66,9 @@ class LauncherTest {
 		for (String file : List.of("domain.pddl", "prob01.pddl")) {
 			Files.copy(CHECKOUT.resolve(gripper).resolve(file), home.resolve(gripper).resolve(file));
 		}
+		// built a minute ago, so that a source changed half a minute ago is newer, and older than the next build
 		Files.writeString(target.resolve(".built"), "");
+		Files.setLastModifiedTime(target.resolve(".built"), FileTime.from(Instant.now().minusSeconds(60)));
 		bin = tmp.resolve("bin");
 		Files.createDirectories(bin);
 		mvnLog = tmp.resolve("mvn.log");
@@ -167,7 +169,7 @@ class LauncherTest {
 	@Test
 	void aChangedSourceOfTheCliIsBuiltATestSourceIsNot() throws IOException, InterruptedException {
 		Map<String, String> noArchive = Map.of("TRIAD_NO_CDS", "1");
-		FileTime later = FileTime.from(Files.getLastModifiedTime(home.resolve("cli/target/.built")).toInstant().plusSeconds(5));
+		FileTime later = FileTime.from(Instant.now().minusSeconds(30));
 		Path test = home.resolve("planner/src/test/java/T.java");
 		Files.createDirectories(test.getParent());
 		Files.writeString(test, "class T {}");
@@ -176,10 +178,11 @@ class LauncherTest {
 		assertFalse(Files.exists(mvnLog), "a test source is not built for the CLI");
 
 		for (String source : List.of("planner/src/main/java/M.java", "cli/src/main/java/M.java", "pom.xml")) {
+			Files.setLastModifiedTime(home.resolve("cli/target/.built"), FileTime.from(Instant.now().minusSeconds(60)));
 			Path main = home.resolve(source);
 			Files.createDirectories(main.getParent());
 			Files.writeString(main, "changed");
-			Files.setLastModifiedTime(main, FileTime.from(Files.getLastModifiedTime(home.resolve("cli/target/.built")).toInstant().plusSeconds(5)));
+			Files.setLastModifiedTime(main, later);
 			Run run = solve(noArchive);
 			assertTrue(run.err().startsWith("triad: building"), source + ": " + run.err());
 			List<String> builds = Files.readAllLines(mvnLog);
