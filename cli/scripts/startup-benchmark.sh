@@ -13,8 +13,16 @@ cd "$root"
 
 before="$root/.triad-before-$$"
 git show "$before_rev:triad" >"$before"
-chmod +x "$before"
-trap 'rm -f "$before"' EXIT
+# the launchers without their last step, exec java: what the bash script itself costs
+before_script="$root/.triad-before-script-$$"
+after_script="$root/.triad-after-script-$$"
+# and the launcher printing the java command line it would exec (NUL-separated)
+after_print="$root/.triad-after-print-$$"
+sed 's|^exec .*|exit 0|' "$before" >"$before_script"
+sed 's|^exec .*|exit 0|' "$root/triad" >"$after_script"
+sed 's|^exec "\$java"|printf "%s\\0" "$java"|' "$root/triad" >"$after_print"
+chmod +x "$before" "$before_script" "$after_script" "$after_print"
+trap 'rm -f "$before" "$before_script" "$after_script" "$after_print"' EXIT
 
 path_java="$(readlink -f "$(command -v java)")"
 path_jdk="$(dirname "$(dirname "$path_java")")"
@@ -79,6 +87,36 @@ for ((c = 0; c < ${#commands[@]}; c++)); do
       "$(tr ' ' '\n' <<<"${walls[$l]}" | grep . | median)" "$(tr ' ' '\n' <<<"${cpus[$l]}" | grep . | median)"
   done
   unset walls cpus
+done
+
+# Where the time of a small solve goes (after, on the JDK the launcher chooses): the bash script up to
+# exec java, the JVM starting and stopping (-version, same flags, no archive), the JVM planning
+# (the java command line the launcher execs), the whole.
+read -ra solve_args <<<"${commands[0]}"
+java_line=()
+while IFS= read -r -d '' a; do java_line+=("$a"); done < <(env -u TRIAD_JAVA "$after_print" "${solve_args[@]}")
+echo
+echo "Where the time of \`triad ${commands[0]}\` goes (after, the JDK the launcher chooses):"
+echo
+echo "| step | wall s | CPU s |"
+echo "|---|---|---|"
+parts=("launcher script before, up to exec java" "$before_script"
+       "launcher script after, up to exec java" "$after_script"
+       "JVM start and exit (java -version, same JVM flags)" "${java_line[0]:-java}"
+       "the JVM's solve (the command line the launcher execs)" "java-line"
+       "the whole ./triad solve" "$root/triad")
+for ((p = 0; p < ${#parts[@]}; p += 2)); do
+  ws=""; cs=""
+  for ((i = 0; i < runs; i++)); do
+    case "${parts[p + 1]}" in
+      java-line) t=$(TIMEFORMAT="%3R %3U %3S"; { time "${java_line[@]}" >/dev/null 2>&1; } 2>&1) ;;
+      */java) t=$(TIMEFORMAT="%3R %3U %3S"; { time "${parts[p + 1]}" -XX:+UseSerialGC -XX:-UsePerfData -XX:TieredStopAtLevel=1 -version >/dev/null 2>&1; } 2>&1) ;;
+      *) t=$(TIMEFORMAT="%3R %3U %3S"; { time env -u TRIAD_JAVA "${parts[p + 1]}" "${solve_args[@]}" >/dev/null 2>&1; } 2>&1) ;;
+    esac
+    read -r w u s <<<"$t"
+    ws+="$w "; cs+="$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.3f", u + s }') "
+  done
+  printf '| %s | %s | %s |\n' "${parts[p]}" "$(tr ' ' '\n' <<<"$ws" | grep . | median)" "$(tr ' ' '\n' <<<"$cs" | grep . | median)"
 done
 echo
 echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"

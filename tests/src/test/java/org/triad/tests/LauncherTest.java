@@ -8,7 +8,6 @@ import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.time.Instant;
@@ -25,7 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The {@code ./triad} launcher, run as a user runs it, in a checkout of its own under a temporary
- * folder: the launcher script, and the built CLI's jars linked from this checkout. It chooses a JVM,
+ * folder: the launcher script, and the built CLI's jars copied from this checkout. It chooses a JVM,
  * makes and reuses a start-up archive per JDK, makes it again when a jar is newer, and builds when a
  * source of the CLI changed (a stand-in {@code mvn} on the PATH records the build it is asked for).
  */
@@ -54,7 +53,7 @@ class LauncherTest {
 		Path builtCli = CHECKOUT.resolve("cli/target");
 		try (Stream<Path> jars = Files.list(builtCli)) {
 			for (Path jar : jars.filter(p -> p.getFileName().toString().matches("triad-cli-.*\\.jar")).toList()) {
-				Files.createSymbolicLink(target.resolve(jar.getFileName()), jar);
+				Files.copy(jar, target.resolve(jar.getFileName()));
 			}
 		}
 		linkClassPath(builtCli.resolve("classpath.txt"), target.resolve("classpath.txt"));
@@ -77,19 +76,19 @@ class LauncherTest {
 		assertTrue(mvn.toFile().setExecutable(true));
 	}
 
-	/** The class path file with every entry in the checkout linked at the same place in the new one. */
+	/** The class path file with every entry in the checkout copied to the same place in the new one. */
 	private void linkClassPath(Path from, Path to) throws IOException {
 		assertTrue(Files.isRegularFile(from), from + " (build the CLI and the hospital first)");
 		List<String> entries = new ArrayList<>();
 		for (String entry : Files.readString(from).trim().split(File.pathSeparator)) {
 			Path p = Path.of(entry);
 			if (p.startsWith(CHECKOUT)) {
-				Path linked = home.resolve(CHECKOUT.relativize(p));
-				Files.createDirectories(linked.getParent());
-				if (!Files.exists(linked, LinkOption.NOFOLLOW_LINKS)) {
-					Files.createSymbolicLink(linked, p);
+				Path copy = home.resolve(CHECKOUT.relativize(p));
+				Files.createDirectories(copy.getParent());
+				if (!Files.exists(copy)) {
+					Files.copy(p, copy);
 				}
-				entries.add(linked.toString());
+				entries.add(copy.toString());
 			} else {
 				entries.add(entry);
 			}
