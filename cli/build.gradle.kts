@@ -17,7 +17,7 @@ dependencies {
 }
 
 application {
-    mainClass.set("org.triad.cli.TriadCli")
+    mainClass.set("org.triad.cli.TriadMain")
 }
 
 tasks.named<JavaExec>("run") {

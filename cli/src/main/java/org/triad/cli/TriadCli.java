@@ -32,17 +32,9 @@ public final class TriadCli implements Runnable {
 		// the demo's options belong to the application's demo, which parses them
 		cl.getSubcommands().get("demo").setUnmatchedOptionsArePositionalParams(true);
 		cl.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
-			commandLine.getErr().println("triad " + commandLine.getCommandName() + ": " + describe(ex));
+			commandLine.getErr().println("triad " + commandLine.getCommandName() + ": " + FailureMessage.of(ex));
 			return 2;
 		});
 		return cl.execute(args);
-	}
-
-	static String describe(Throwable e) {
-		Throwable t = e;
-		while (t.getCause() != null && t.getCause() != t && (t.getMessage() == null || t instanceof RuntimeException && t.getCause() != null)) {
-			t = t.getCause();
-		}
-		return t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
 	}
 }

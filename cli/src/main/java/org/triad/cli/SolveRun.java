@@ -1,0 +1,87 @@
+package org.triad.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.time.Duration;
+
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.SolveResult;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParseException;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+
+/**
+ * One {@code triad solve} after its arguments are checked: read, plan, print, and the exit code
+ * (0 solved, 1 no plan, 2 bad input or planner error). Shared by {@link SolveCommand} and the
+ * launcher's picocli-free entry ({@link TriadMain}), so both answer alike; it loads the planner and
+ * nothing of the command-line library.
+ */
+final class SolveRun {
+	private final Path domainFile;
+	private final Path problemFile;
+	private final Path planFile;
+	private final PddlPlanner engine;
+	private final double timeoutSeconds;
+
+	/** @param planFile where to write the plan too, or null */
+	SolveRun(Path domainFile, Path problemFile, Path planFile, PddlPlanner engine, double timeoutSeconds) {
+		this.domainFile = domainFile;
+		this.problemFile = problemFile;
+		this.planFile = planFile;
+		this.engine = engine;
+		this.timeoutSeconds = timeoutSeconds;
+	}
+
+	/** True for the time limits {@code --timeout} accepts: positive and finite. */
+	static boolean validTimeout(double seconds) {
+		return seconds > 0 && !Double.isInfinite(seconds);
+	}
+
+	int run(PrintWriter out, PrintWriter err) {
+		Domain domain;
+		Problem problem;
+		try {
+			domain = PddlParser.parseDomain(domainFile);
+			problem = PddlParser.parseProblem(problemFile);
+		} catch (PddlParseException e) {
+			err.println("error: " + e.getMessage());
+			return 2;
+		} catch (NoSuchFileException e) {
+			err.println("error: no such file: " + e.getFile());
+			return 2;
+		} catch (IOException e) {
+			err.println("error: cannot read input: " + e.getMessage());
+			return 2;
+		}
+		SolveResult r = engine.solve(domain, problem, Duration.ofMillis((long) (timeoutSeconds * 1000)));
+		switch (r.status()) {
+			case SOLVED: {
+				String text = r.plan().toPddl();
+				out.print(text);
+				out.flush();
+				if (planFile != null) {
+					try {
+						Files.writeString(planFile, text);
+					} catch (IOException e) {
+						err.println("error: cannot write the plan file " + planFile + ": " + e);
+						return 2;
+					}
+				}
+				return 0;
+			}
+			case UNSOLVABLE:
+				err.println("no plan: problem is unsolvable (" + r.message() + ")");
+				return 1;
+			case TIMEOUT:
+				err.println("no plan: time limit of " + timeoutSeconds + " s reached");
+				return 1;
+			default:
+				err.println("error: " + r.message());
+				return 2;
+		}
+	}
+}
