@@ -67,7 +67,9 @@ class TriadMainTest {
 		Path plan = dir.resolve("plan.txt");
 		Run run = java(cliAndPlanner(), TriadMain.class.getName(), "solve", DOMAIN, PROBLEM, "-o", plan.toString(), "--timeout", "20");
 		assertEquals(0, run.exit(), run.err());
-		assertTrue(run.out().endsWith("; cost = 15 (unit cost)\n"), run.out());
+		// as many actions as the cost line says (the engine's plan for gripper prob01 is 11 to 15 steps long)
+		long actions = run.out().lines().filter(l -> l.startsWith("(")).count();
+		assertTrue(actions >= 11 && run.out().endsWith("; cost = " + actions + " (unit cost)\n"), run.out());
 		assertEquals(run.out(), Files.readString(plan));
 		answersAsTriadCli("solve", DOMAIN, PROBLEM, "--planner", "triad");
 	}
