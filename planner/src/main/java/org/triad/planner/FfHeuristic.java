@@ -7,7 +7,7 @@ package org.triad.planner;
  * Scratch arrays are reused and invalidated by an epoch counter, so an evaluation only touches the
  * part of the graph it explores.
  */
-final class FfHeuristic {
+class FfHeuristic {
     static final int INFINITE = Integer.MAX_VALUE;
 
     private final SearchTask t;
