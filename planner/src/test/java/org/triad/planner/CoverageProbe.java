@@ -5,7 +5,14 @@ import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.PddlParser;
 import org.triad.planner.pddl.Problem;
 
-/** Timestamps and counters of the phases to the first plan: CoverageProbe PROBLEM SECONDS. */
+/**
+ * Timestamps and counters of the phases to a first plan, without a profiler:
+ * {@code CoverageProbe PROBLEM SECONDS [lazy|lazyff|eager|trace PLAN_FILE]} (domain found as Fast
+ * Downward's driver finds it; {@code -Dadditive} uses {@link AdditiveFfHeuristic}). Prints parse,
+ * grounding, relevance and landmark times and sizes, then one search's outcome, expansions,
+ * evaluations and evaluations per second; {@code trace} prints h, the landmark count and whether
+ * the next action is helpful along a given plan (e.g. Fast Downward's). See planner/BENCHMARK.md.
+ */
 public final class CoverageProbe {
     public static void main(String[] args) throws Exception {
         Path pf = Path.of(args[0]);
