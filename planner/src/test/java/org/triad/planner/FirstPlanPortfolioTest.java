@@ -88,6 +88,21 @@ class FirstPlanPortfolioTest {
     }
 
     @Test
+    void anInterruptedLazySearchResumesWhereItStopped() {
+        GroundedProblem.Query q = query(GATES, THREE_GATES);
+        NegativeGoalCompilation c = NegativeGoalCompilation.of(q.task(), q.init(), q.goalPos(), q.goalNeg());
+        BestFirstSearch.Result whole = new LazyGreedySearch(new FfHeuristic(c.task), null, new Successors(c.task), deadline())
+                .run(c.init, c.goalPos, new int[0]);
+        LazyGreedySearch.Run run = new LazyGreedySearch(new FfHeuristic(c.task), null, new Successors(c.task), deadline())
+                .start(c.init, c.goalPos, new int[0]);
+        assertEquals(BestFirstSearch.Outcome.TIMEOUT, run.resume(System.nanoTime() - 1, Long.MAX_VALUE).outcome());
+        BestFirstSearch.Result resumed = run.resume(deadline(), Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.FOUND, resumed.outcome());
+        org.junit.jupiter.api.Assertions.assertArrayEquals(whole.plan(), resumed.plan());
+        assertEquals(whole.evaluated(), resumed.evaluated());
+    }
+
+    @Test
     void noCompilationWithoutNegativeGoals() {
         GroundedProblem.Query q = query(DOORS, TWO_DOORS);
         assertNull(NegativeGoalCompilation.of(q.task(), q.init(), q.goalPos(), q.goalNeg()));
