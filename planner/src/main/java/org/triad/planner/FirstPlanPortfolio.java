@@ -22,7 +22,8 @@ package org.triad.planner;
  * relaxed plans mislead, h^add supporters do not (transport-sat11 p03). Time slices, not evaluation
  * counts, because evaluations differ up to tenfold in cost between configurations. Every
  * configuration is complete (closed lists; only relaxed dead ends are pruned), so exhausting any one
- * proves the task unsolvable.
+ * but the h^add one proves the task unsolvable (the h^add relaxation reads preconditions and adds only;
+ * where the task has more, such as conditional effects, its dead ends are no proof).
  */
 final class FirstPlanPortfolio {
     /** Time of each configuration in the first round. */
@@ -53,9 +54,14 @@ final class FirstPlanPortfolio {
         long[] counted = new long[2 * CONFIGURATIONS];
         long slice = FIRST_SLICE_NANOS;
         int config = 0;
+        boolean exhaustedAdditive = false;
         while (true) {
             long now = System.nanoTime();
             if (now > deadline) return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, 0, 0);
+            if (config == 1 && exhaustedAdditive) {
+                config = 2;
+                continue;
+            }
             long until = deadline - now > slice ? now + slice : deadline;
             BestFirstSearch.Result r;
             boolean progressed = false;
@@ -77,7 +83,14 @@ final class FirstPlanPortfolio {
                 counted[2 * config + 1] = r.evaluated();
             }
             usedNanos[config] += System.nanoTime() - now;
-            if (r.outcome() != BestFirstSearch.Outcome.TIMEOUT) return r;
+            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED && config == 1) {
+                // AdditiveFfHeuristic relaxes preconditions and adds only (no conditional effects, no
+                // rules): its dead ends are not proofs, so its exhaustion only ends its turns
+                usedNanos[config] = Long.MAX_VALUE / 4;
+                exhaustedAdditive = true;
+            } else if (r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
+                return r;
+            }
             // a lazy search that reached a new best heuristic value keeps its turn, within its share
             long elapsed = System.nanoTime() - begin;
             if (progressed && usedNanos[config] * PROGRESS_SHARE_DENOMINATOR <= elapsed * PROGRESS_SHARE_NUMERATOR) continue;

@@ -24,9 +24,16 @@ final class NegativeGoalCompilation {
         this.goalPos = goalPos;
     }
 
-    /** The compiled task, or null when there is no negative goal (nothing to gain). */
+    /**
+     * The compiled task, or null when there is no negative goal (nothing to gain) or an operator is
+     * more than preconditions, adds and deletes (a record with further components, e.g. conditional
+     * effects, is not equal to its plain copy): the compilation only knows plain operators.
+     */
     static NegativeGoalCompilation of(SearchTask t, int[] init, int[] goalPos, int[] goalNeg) {
         if (goalNeg.length == 0) return null;
+        for (GroundOp op : t.ops) {
+            if (!op.equals(new GroundOp(op.name(), op.args(), op.pre(), op.neg(), op.add(), op.del(), op.cost()))) return null;
+        }
         int[] complement = new int[t.numFacts];
         Arrays.fill(complement, -1);
         int k = 0;

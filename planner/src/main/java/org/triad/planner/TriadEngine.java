@@ -175,10 +175,12 @@ public final class TriadEngine implements PddlPlanner {
         }
         if (plan == null && System.nanoTime() < deadline) {
             NegativeGoalCompilation c = NegativeGoalCompilation.of(task, q.init(), q.goalPos(), q.goalNeg());
-            BestFirstSearch.Result r = c == null
-                    ? new FirstPlanPortfolio(task, h, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg(), effort)
+            BestFirstSearch.Result r = c == null ? null
                     : new FirstPlanPortfolio(c.task, new FfHeuristic(c.task), new Successors(c.task), deadline)
                             .run(c.init, c.goalPos, new int[0], effort);
+            // the compiled plan is replayed on the task itself, which alone knows every effect and rule
+            if (r != null && r.outcome() == BestFirstSearch.Outcome.FOUND && !solves(succ, q, r.plan())) r = null;
+            if (r == null) r = new FirstPlanPortfolio(task, h, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg(), effort);
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
                 return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
@@ -200,6 +202,15 @@ public final class TriadEngine implements PddlPlanner {
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
+    }
+
+    private static boolean solves(Successors succ, GroundedProblem.Query q, int[] plan) {
+        int[] state = q.init();
+        for (int o : plan) {
+            if (!succ.isApplicable(state, o)) return false;
+            state = succ.apply(state, o);
+        }
+        return Successors.satisfies(state, q.goalPos(), q.goalNeg());
     }
 
     /**
