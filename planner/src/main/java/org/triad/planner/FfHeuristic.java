@@ -8,7 +8,7 @@ package org.triad.planner;
  * part of the graph it explores. Conditional effects are relaxed as separate operators
  * ({@link RelaxedOps}); the value counts each operator of the relaxed plan once.
  */
-final class FfHeuristic {
+class FfHeuristic {
     static final int INFINITE = Integer.MAX_VALUE;
 
     private final RelaxedOps t;

@@ -45,77 +45,112 @@ final class LazyGreedySearch {
 
     /** Stops with {@code LIMIT} after {@code evaluationLimit} heuristic evaluations. */
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg, long evaluationLimit) {
-        StateSpace space = new StateSpace();
-        int nq = landmarks == null ? 2 : 3;
-        LongHeap[] queues = new LongHeap[nq];
-        for (int i = 0; i < nq; i++) queues[i] = new LongHeap();
-        int[] priority = new int[nq];
-        long[][] accepted = landmarks == null ? null : new long[1024][];
-        long expanded = 0;
-        long evaluated = 0;
-        int bestFf = Integer.MAX_VALUE;
-        int bestLm = Integer.MAX_VALUE;
-        queues[0].push(0, entry(-1, -1));
-        while (true) {
-            int qi = -1;
-            for (int i = 0; i < nq; i++) {
-                if (!queues[i].isEmpty() && (qi < 0 || priority[i] < priority[qi])) qi = i;
-            }
-            if (qi < 0) break;
-            priority[qi]++;
-            if ((evaluated & 7) == 0 && System.nanoTime() > deadline) {
-                return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
-            }
-            if (evaluated >= evaluationLimit) {
-                return new BestFirstSearch.Result(BestFirstSearch.Outcome.LIMIT, null, null, expanded, evaluated);
-            }
-            int e = queues[qi].pop();
-            int parent = entryParent[e];
-            int op = entryOp[e];
-            int[] state = parent < 0 ? init : successors.apply(space.state(parent), op);
-            if (space.find(state) >= 0) continue;
-            int g = parent < 0 ? 0 : space.g(parent) + 1;
-            int h = heuristic.evaluate(state, goalPos);
-            evaluated++;
-            int node = space.add(state, parent, op, g, h);
-            if (h == FfHeuristic.INFINITE) continue;
-            if (Successors.satisfies(state, goalPos, goalNeg)) {
-                return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
-            }
-            expanded++;
-            boolean progress = false;
-            if (h < bestFf) {
-                bestFf = h;
-                progress = true;
-            }
-            int hl = 0;
-            if (landmarks != null) {
-                if (node >= accepted.length) accepted = Arrays.copyOf(accepted, accepted.length * 2);
-                accepted[node] = landmarks.accept(parent < 0 ? null : accepted[parent], state);
-                hl = landmarks.value(accepted[node], state);
-                if (hl < bestLm) {
-                    bestLm = hl;
+        return start(init, goalPos, goalNeg).resume(deadline, evaluationLimit);
+    }
+
+    /** A search that can be interrupted (TIMEOUT at a given time) and resumed where it stopped. */
+    Run start(int[] init, int[] goalPos, int[] goalNeg) {
+        return new Run(init, goalPos, goalNeg);
+    }
+
+    final class Run {
+        private final int[] init;
+        private final int[] goalPos;
+        private final int[] goalNeg;
+        private final StateSpace space = new StateSpace();
+        private final int nq = landmarks == null ? 2 : 3;
+        private final LongHeap[] queues = new LongHeap[nq];
+        private final int[] priority = new int[nq];
+        private long[][] accepted = landmarks == null ? null : new long[1024][];
+        private long expanded;
+        private long evaluated;
+        private int bestFf = Integer.MAX_VALUE;
+        private int bestLm = Integer.MAX_VALUE;
+        /** Evaluations when either heuristic last reached a new best value. */
+        private long lastProgress;
+
+        private Run(int[] init, int[] goalPos, int[] goalNeg) {
+            this.init = init;
+            this.goalPos = goalPos;
+            this.goalNeg = goalNeg;
+            for (int i = 0; i < nq; i++) queues[i] = new LongHeap();
+            queues[0].push(0, entry(-1, -1));
+        }
+
+        long evaluated() {
+            return evaluated;
+        }
+
+        /** Evaluations when a heuristic last reached a new best value (its plateau began there). */
+        long lastProgress() {
+            return lastProgress;
+        }
+
+        /** Continues until a plan, exhaustion, {@code until} (TIMEOUT) or {@code evaluationLimit} evaluations in all (LIMIT). */
+        BestFirstSearch.Result resume(long until, long evaluationLimit) {
+            while (true) {
+                int qi = -1;
+                for (int i = 0; i < nq; i++) {
+                    if (!queues[i].isEmpty() && (qi < 0 || priority[i] < priority[qi])) qi = i;
+                }
+                if (qi < 0) break;
+                // checked before the queue's turn is counted, so a resumed search continues exactly
+                if ((evaluated & 7) == 0 && System.nanoTime() > until) {
+                    return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
+                }
+                if (evaluated >= evaluationLimit) {
+                    return new BestFirstSearch.Result(BestFirstSearch.Outcome.LIMIT, null, null, expanded, evaluated);
+                }
+                priority[qi]++;
+                int e = queues[qi].pop();
+                int parent = entryParent[e];
+                int op = entryOp[e];
+                int[] state = parent < 0 ? init : successors.apply(space.state(parent), op);
+                if (space.find(state) >= 0) continue;
+                int g = parent < 0 ? 0 : space.g(parent) + 1;
+                int h = heuristic.evaluate(state, goalPos);
+                evaluated++;
+                int node = space.add(state, parent, op, g, h);
+                if (h == FfHeuristic.INFINITE) continue;
+                if (Successors.satisfies(state, goalPos, goalNeg)) {
+                    return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
+                }
+                expanded++;
+                boolean progress = false;
+                if (h < bestFf) {
+                    bestFf = h;
                     progress = true;
                 }
+                int hl = 0;
+                if (landmarks != null) {
+                    if (node >= accepted.length) accepted = Arrays.copyOf(accepted, accepted.length * 2);
+                    accepted[node] = landmarks.accept(parent < 0 ? null : accepted[parent], state);
+                    hl = landmarks.value(accepted[node], state);
+                    if (hl < bestLm) {
+                        bestLm = hl;
+                        progress = true;
+                    }
+                }
+                if (progress) {
+                    lastProgress = evaluated;
+                    priority[1] -= 1000;
+                    if (nq == 3) priority[2] -= 1000;
+                }
+                int nh = heuristic.helpfulCount();
+                int[] helpful = new int[nh];
+                for (int i = 0; i < nh; i++) helpful[i] = heuristic.helpful(i);
+                Arrays.sort(helpful);
+                int n = successors.applicable(state);
+                for (int i = 0; i < n; i++) {
+                    int o = successors.get(i);
+                    int id = entry(node, o);
+                    boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
+                    queues[0].push(h, id);
+                    if (preferred) queues[1].push(h, id);
+                    if (preferred && nq == 3) queues[2].push(hl, id);
+                }
             }
-            if (progress) {
-                priority[1] -= 1000;
-                if (nq == 3) priority[2] -= 1000;
-            }
-            int nh = heuristic.helpfulCount();
-            int[] helpful = new int[nh];
-            for (int i = 0; i < nh; i++) helpful[i] = heuristic.helpful(i);
-            Arrays.sort(helpful);
-            int n = successors.applicable(state);
-            for (int i = 0; i < n; i++) {
-                int o = successors.get(i);
-                int id = entry(node, o);
-                boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
-                queues[0].push(h, id);
-                if (preferred) queues[1].push(h, id);
-                if (preferred && nq == 3) queues[2].push(hl, id);
-            }
+            return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);
         }
-        return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);
     }
 }

@@ -24,9 +24,11 @@ import org.triad.planner.pddl.Problem;
  *     continuing from the previous stage's end state and keeping the goals reached so far; the goals
  *     are taken nearest first (relaxed distance from where the last stage ended) and, within a budget,
  *     in the problem's order; the shorter plan wins;</li>
- * <li>if a bounded stage fails: LAMA-style lazy greedy best-first search alternating the FF and
- *     landmark-count heuristics with preferred (helpful) operators (complete, with a closed list;
- *     exhausting it proves the problem unsolvable);</li>
+ * <li>if a bounded stage fails: {@link FirstPlanPortfolio}, LAMA-style lazy greedy best-first search
+ *     (FF and landmark count, preferred operators), the same with FF alone and eager greedy search
+ *     taking turns with doubling budgets (each complete, with a closed list; exhausting one proves
+ *     the problem unsolvable), on {@link NegativeGoalCompilation}'s task when there are negative
+ *     goals (so that the heuristics see them);</li>
  * </ol>
  * and finally makes the plan shorter: an exact search's plan only loses redundant actions; any
  * other plan goes to {@link PlanImprover} (action elimination, the lazy search when the agenda found
@@ -172,10 +174,13 @@ public final class TriadEngine implements PddlPlanner {
             fromAgenda = plan != null;
         }
         if (plan == null && System.nanoTime() < deadline) {
-            Landmarks lms = new Landmarks(task, q.init(), q.goalPos(), deadline);
-            BestFirstSearch.Result r = new LazyGreedySearch(h, lms, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
-            effort[0] += r.expanded();
-            effort[1] += r.evaluated();
+            NegativeGoalCompilation c = NegativeGoalCompilation.of(task, q.init(), q.goalPos(), q.goalNeg());
+            BestFirstSearch.Result r = c == null ? null
+                    : new FirstPlanPortfolio(c.task, new FfHeuristic(c.task), new Successors(c.task), deadline)
+                            .run(c.init, c.goalPos, new int[0], effort);
+            // the compiled plan is replayed on the task itself, which alone knows every effect and rule
+            if (r != null && r.outcome() == BestFirstSearch.Outcome.FOUND && !solves(succ, q, r.plan())) r = null;
+            if (r == null) r = new FirstPlanPortfolio(task, h, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg(), effort);
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
                 return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
@@ -197,6 +202,15 @@ public final class TriadEngine implements PddlPlanner {
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());
         return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
+    }
+
+    private static boolean solves(Successors succ, GroundedProblem.Query q, int[] plan) {
+        int[] state = q.init();
+        for (int o : plan) {
+            if (!succ.isApplicable(state, o)) return false;
+            state = succ.apply(state, o);
+        }
+        return Successors.satisfies(state, q.goalPos(), q.goalNeg());
     }
 
     /**

@@ -1,0 +1,198 @@
+package org.triad.planner;
+
+/**
+ * The FF heuristic with h^add best supporters, as Fast Downward computes it: the relaxed plan is
+ * extracted through, for each fact, the achiever whose preconditions have the least summed
+ * relaxed cost (a Dijkstra over facts), not the first achiever by relaxed level. Level-first
+ * supporters pick whatever achiever the breadth-first exploration meets first, often one whose
+ * preconditions take a detour of their own (in mystery p10 the heuristic then grows along Fast
+ * Downward's 8-step plan and its first steps are not helpful); summed costs prefer achievers
+ * that share what is already needed. Costs more per evaluation (a bucket queue), so {@link FirstPlanPortfolio}
+ * uses it in one configuration beside the level-based one.
+ */
+final class AdditiveFfHeuristic extends FfHeuristic {
+    /** Summed costs can grow fast; beyond this they are all alike (and the bucket array stays small). */
+    static final int MAX_COST = 1 << 16;
+
+    private final SearchTask t;
+    private final int[] cost;
+    private final int[] factEpoch;
+    private final int[] done;
+    private final int[] supporter;
+    /** Per operator, interleaved for locality: [3o] epoch of last touch, [3o+1] unmet preconditions, [3o+2] summed cost. */
+    private final int[] opState;
+    /** Compressed rows as in {@link FfHeuristic}: operators with precondition f, adds of operator o. */
+    private final int[] preStart;
+    private final int[] preOps;
+    private final int[] preCount;
+    private final int[] addStart;
+    private final int[] addFacts;
+    private final int[] opMark;
+    private final int[] factMark;
+    private final int[] goalMark;
+    private final int[] stack;
+    /** Bucket queue by cost (Dijkstra's pops are monotone): facts of cost c in bucket[c][0 .. bucketSize[c]). */
+    private int[][] bucket = new int[64][];
+    private int[] bucketSize = new int[64];
+    private int current;
+    private int highest;
+    private int epoch;
+    private int[] helpfulOps = new int[16];
+    private int helpfulN;
+
+    AdditiveFfHeuristic(SearchTask t) {
+        super(t);
+        this.t = t;
+        int nf = t.numFacts;
+        int no = t.ops.length;
+        cost = new int[nf];
+        factEpoch = new int[nf];
+        done = new int[nf];
+        supporter = new int[nf];
+        opState = new int[3 * no];
+        preStart = new int[nf + 1];
+        int total = 0;
+        for (int f = 0; f < nf; f++) {
+            preStart[f] = total;
+            total += t.preOf[f].length;
+        }
+        preStart[nf] = total;
+        preOps = new int[total];
+        for (int f = 0; f < nf; f++) System.arraycopy(t.preOf[f], 0, preOps, preStart[f], t.preOf[f].length);
+        preCount = new int[no];
+        addStart = new int[no + 1];
+        int adds = 0;
+        for (int o = 0; o < no; o++) {
+            preCount[o] = t.pre[o].length;
+            addStart[o] = adds;
+            adds += t.add[o].length;
+        }
+        addStart[no] = adds;
+        addFacts = new int[adds];
+        for (int o = 0; o < no; o++) System.arraycopy(t.add[o], 0, addFacts, addStart[o], t.add[o].length);
+        opMark = new int[no];
+        factMark = new int[nf];
+        goalMark = new int[nf];
+        stack = new int[nf];
+    }
+
+    @Override
+    int helpfulCount() {
+        return helpfulN;
+    }
+
+    @Override
+    int helpful(int i) {
+        return helpfulOps[i];
+    }
+
+    private void reach(int f, int c, int op) {
+        if (factEpoch[f] != epoch || c < cost[f]) {
+            factEpoch[f] = epoch;
+            cost[f] = c;
+            supporter[f] = op;
+            push(c, f);
+        }
+    }
+
+    private void push(int c, int f) {
+        if (c >= bucket.length) {
+            int n = Math.max(c + 1, 2 * bucket.length);
+            bucket = java.util.Arrays.copyOf(bucket, n);
+            bucketSize = java.util.Arrays.copyOf(bucketSize, n);
+        }
+        int[] b = bucket[c];
+        if (b == null) b = bucket[c] = new int[16];
+        if (bucketSize[c] == b.length) b = bucket[c] = java.util.Arrays.copyOf(b, 2 * b.length);
+        b[bucketSize[c]++] = f;
+        if (c > highest) highest = c;
+    }
+
+    /** The next fact by cost, -1 when none is left. */
+    private int pop() {
+        while (current <= highest) {
+            if (bucketSize[current] > 0) return bucket[current][--bucketSize[current]];
+            current++;
+        }
+        return -1;
+    }
+
+    @Override
+    int evaluate(int[] state, int[] goals) {
+        epoch++;
+        helpfulN = 0;
+        for (int c = 0; c <= highest; c++) bucketSize[c] = 0;
+        current = 0;
+        highest = 0;
+        for (int f : state) reach(f, 0, -1);
+        int missing = 0;
+        for (int g : goals) {
+            if (factEpoch[g] != epoch) {
+                if (goalMark[g] != epoch) missing++;
+                goalMark[g] = epoch;
+            }
+        }
+        if (missing == 0) return 0;
+        for (int o : t.noPre) for (int a : t.add[o]) reach(a, 1, o);
+        while (missing > 0) {
+            int f = pop();
+            if (f < 0) break;
+            if (done[f] == epoch) continue;
+            done[f] = epoch;
+            if (goalMark[f] == epoch) missing--;
+            int c = cost[f];
+            for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
+                int o = preOps[i];
+                int s3 = 3 * o;
+                int oc;
+                if (preCount[o] == 1) {
+                    oc = c + 1;
+                } else {
+                    if (opState[s3] != epoch) {
+                        opState[s3] = epoch;
+                        opState[s3 + 1] = preCount[o] - 1;
+                        opState[s3 + 2] = c;
+                        continue;
+                    }
+                    opState[s3 + 2] += c;
+                    if (--opState[s3 + 1] != 0) continue;
+                    oc = Math.min(opState[s3 + 2] + 1, MAX_COST);
+                }
+                for (int j = addStart[o], aend = addStart[o + 1]; j < aend; j++) {
+                    int a = addFacts[j];
+                    if (done[a] != epoch) reach(a, oc, o);
+                }
+            }
+        }
+        if (missing > 0) return INFINITE;
+        int h = 0;
+        int sp = 0;
+        for (int g : goals) {
+            if (cost[g] > 0 && factMark[g] != epoch) {
+                factMark[g] = epoch;
+                stack[sp++] = g;
+            }
+        }
+        while (sp > 0) {
+            int o = supporter[stack[--sp]];
+            if (opMark[o] == epoch) continue;
+            opMark[o] = epoch;
+            h++;
+            boolean applicable = true;
+            for (int p : t.pre[o]) {
+                if (cost[p] > 0) {
+                    applicable = false;
+                    if (factMark[p] != epoch) {
+                        factMark[p] = epoch;
+                        stack[sp++] = p;
+                    }
+                }
+            }
+            if (applicable) {
+                if (helpfulN == helpfulOps.length) helpfulOps = java.util.Arrays.copyOf(helpfulOps, helpfulN * 2);
+                helpfulOps[helpfulN++] = o;
+            }
+        }
+        return h;
+    }
+}
