@@ -7,14 +7,18 @@ package org.triad.planner;
  * supporters pick whatever achiever the breadth-first exploration meets first, often one whose
  * preconditions take a detour of their own (in mystery p10 the heuristic then grows along Fast
  * Downward's 8-step plan and its first steps are not helpful); summed costs prefer achievers
- * that share what is already needed. Costs more per evaluation (a bucket queue), so {@link FirstPlanPortfolio}
+ * that share what is already needed. It relaxes the task as {@link FfHeuristic} does ({@link RelaxedOps}:
+ * conditional effects, complements of facts needed false, derived-predicate rules). Costs more per evaluation (a bucket queue), so {@link FirstPlanPortfolio}
  * uses it in one configuration beside the level-based one.
  */
 final class AdditiveFfHeuristic extends FfHeuristic {
     /** Summed costs can grow fast; beyond this they are all alike (and the bucket array stays small). */
     static final int MAX_COST = 1 << 16;
 
-    private final SearchTask t;
+    private final RelaxedOps t;
+    /** Per task operator: epoch in which it was counted in the relaxed plan / made helpful. */
+    private final int[] counted;
+    private final int[] helpfulMark;
     private final int[] cost;
     private final int[] factEpoch;
     private final int[] done;
@@ -40,36 +44,24 @@ final class AdditiveFfHeuristic extends FfHeuristic {
     private int[] helpfulOps = new int[16];
     private int helpfulN;
 
-    AdditiveFfHeuristic(SearchTask t) {
-        super(t);
-        this.t = t;
-        int nf = t.numFacts;
-        int no = t.ops.length;
+    AdditiveFfHeuristic(SearchTask task) {
+        super(task);
+        this.t = task.relaxed;
+        int nf = t.size;
+        int no = t.count;
+        counted = new int[task.ops.length];
+        helpfulMark = new int[task.ops.length];
         cost = new int[nf];
         factEpoch = new int[nf];
         done = new int[nf];
         supporter = new int[nf];
         opState = new int[3 * no];
-        preStart = new int[nf + 1];
-        int total = 0;
-        for (int f = 0; f < nf; f++) {
-            preStart[f] = total;
-            total += t.preOf[f].length;
-        }
-        preStart[nf] = total;
-        preOps = new int[total];
-        for (int f = 0; f < nf; f++) System.arraycopy(t.preOf[f], 0, preOps, preStart[f], t.preOf[f].length);
-        preCount = new int[no];
-        addStart = new int[no + 1];
-        int adds = 0;
-        for (int o = 0; o < no; o++) {
-            preCount[o] = t.pre[o].length;
-            addStart[o] = adds;
-            adds += t.add[o].length;
-        }
-        addStart[no] = adds;
-        addFacts = new int[adds];
-        for (int o = 0; o < no; o++) System.arraycopy(t.add[o], 0, addFacts, addStart[o], t.add[o].length);
+        RelaxedRows rows = new RelaxedRows(t);
+        preStart = rows.preStart;
+        preOps = rows.preOps;
+        preCount = rows.preCount;
+        addStart = rows.addStart;
+        addFacts = rows.addFacts;
         opMark = new int[no];
         factMark = new int[nf];
         goalMark = new int[nf];
@@ -125,6 +117,10 @@ final class AdditiveFfHeuristic extends FfHeuristic {
         current = 0;
         highest = 0;
         for (int f : state) reach(f, 0, -1);
+        // a fact the state lacks makes its complement true (negative preconditions and conditions)
+        for (int k = 0; k < t.negFacts.length; k++) {
+            if (factEpoch[t.negFacts[k]] != epoch) reach(t.numFacts + k, 0, -1);
+        }
         int missing = 0;
         for (int g : goals) {
             if (factEpoch[g] != epoch) {
@@ -177,7 +173,12 @@ final class AdditiveFfHeuristic extends FfHeuristic {
             int o = supporter[stack[--sp]];
             if (opMark[o] == epoch) continue;
             opMark[o] = epoch;
-            h++;
+            // a conditional effect's relaxed operator counts as its action, once; a rule (-1) counts not
+            int taskOp = t.op[o];
+            if (taskOp >= 0 && counted[taskOp] != epoch) {
+                counted[taskOp] = epoch;
+                h++;
+            }
             boolean applicable = true;
             for (int p : t.pre[o]) {
                 if (cost[p] > 0) {
@@ -188,9 +189,10 @@ final class AdditiveFfHeuristic extends FfHeuristic {
                     }
                 }
             }
-            if (applicable) {
+            if (applicable && taskOp >= 0 && helpfulMark[taskOp] != epoch) {
+                helpfulMark[taskOp] = epoch;
                 if (helpfulN == helpfulOps.length) helpfulOps = java.util.Arrays.copyOf(helpfulOps, helpfulN * 2);
-                helpfulOps[helpfulN++] = o;
+                helpfulOps[helpfulN++] = taskOp;
             }
         }
         return h;

@@ -44,26 +44,12 @@ class FfHeuristic {
         factEpoch = new int[nf];
         supporter = new int[nf];
         opState = new int[2 * no];
-        preStart = new int[nf + 1];
-        int total = 0;
-        for (int f = 0; f < nf; f++) {
-            preStart[f] = total;
-            total += t.preOf[f].length;
-        }
-        preStart[nf] = total;
-        preOps = new int[total];
-        for (int f = 0; f < nf; f++) System.arraycopy(t.preOf[f], 0, preOps, preStart[f], t.preOf[f].length);
-        preCount = new int[no];
-        addStart = new int[no + 1];
-        int adds = 0;
-        for (int o = 0; o < no; o++) {
-            preCount[o] = t.pre[o].length;
-            addStart[o] = adds;
-            adds += t.add[o].length;
-        }
-        addStart[no] = adds;
-        addFacts = new int[adds];
-        for (int o = 0; o < no; o++) System.arraycopy(t.add[o], 0, addFacts, addStart[o], t.add[o].length);
+        RelaxedRows rows = new RelaxedRows(t);
+        preStart = rows.preStart;
+        preOps = rows.preOps;
+        preCount = rows.preCount;
+        addStart = rows.addStart;
+        addFacts = rows.addFacts;
         opMark = new int[no];
         factMark = new int[nf];
         queue = new int[nf];

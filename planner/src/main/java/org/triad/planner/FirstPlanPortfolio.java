@@ -84,8 +84,8 @@ final class FirstPlanPortfolio {
             }
             usedNanos[config] += System.nanoTime() - now;
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED && config == 1) {
-                // AdditiveFfHeuristic relaxes preconditions and adds only (no conditional effects, no
-                // rules): its dead ends are not proofs, so its exhaustion only ends its turns
+                // its exhaustion only ends its turns: the searches with the level-based FF, whose
+                // exhaustion the engine reports as unsolvable, decide that alone
                 usedNanos[config] = Long.MAX_VALUE / 4;
                 exhaustedAdditive = true;
             } else if (r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {

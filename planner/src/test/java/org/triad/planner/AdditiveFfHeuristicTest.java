@@ -50,4 +50,30 @@ class AdditiveFfHeuristicTest {
         GroundedProblem.Query never = query("(blocked)");
         assertEquals(FfHeuristic.INFINITE, new AdditiveFfHeuristic(never.task()).evaluate(never.init(), never.goalPos()));
     }
+
+    /** A goal only a conditional effect reaches, behind a fact that must be false first. */
+    private static final Domain SWITCHES = PddlParser.parseDomain("""
+            (define (domain switches) (:requirements :adl)
+              (:predicates (lit ?x) (armed) (locked))
+              (:action arm :parameters () :precondition (not (locked)) :effect (armed))
+              (:action unlock :parameters () :precondition (locked) :effect (not (locked)))
+              (:action press :parameters (?x) :precondition (and)
+                :effect (when (armed) (lit ?x))))
+            """, "switches.pddl");
+
+    @Test
+    void conditionalEffectsAndFactsNeededFalseAreRelaxedAsFfRelaxesThem() {
+        Problem p = PddlParser.parseProblem("""
+                (define (problem two) (:domain switches) (:objects a b)
+                  (:init (locked))
+                  (:goal (and (lit a) (lit b))))
+                """, "two.pddl");
+        GroundedProblem.Query q = new GroundedProblem(SWITCHES, p).query(p);
+        AdditiveFfHeuristic h = new AdditiveFfHeuristic(q.task());
+        // unlock, arm, press a, press b: each action once, though each press is a relaxed operator of its own
+        assertEquals(4, h.evaluate(q.init(), q.goalPos()));
+        assertEquals(new FfHeuristic(q.task()).evaluate(q.init(), q.goalPos()), h.evaluate(q.init(), q.goalPos()));
+        assertEquals(1, h.helpfulCount());
+        assertEquals("unlock", q.task().ops[h.helpful(0)].name());
+    }
 }
