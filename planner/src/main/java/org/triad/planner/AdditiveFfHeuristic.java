@@ -16,9 +16,6 @@ final class AdditiveFfHeuristic extends FfHeuristic {
     static final int MAX_COST = 1 << 16;
 
     private final RelaxedOps t;
-    /** Per task operator: epoch in which it was counted in the relaxed plan / made helpful. */
-    private final int[] counted;
-    private final int[] helpfulMark;
     private final int[] cost;
     private final int[] factEpoch;
     private final int[] done;
@@ -31,26 +28,19 @@ final class AdditiveFfHeuristic extends FfHeuristic {
     private final int[] preCount;
     private final int[] addStart;
     private final int[] addFacts;
-    private final int[] opMark;
-    private final int[] factMark;
     private final int[] goalMark;
-    private final int[] stack;
     /** Bucket queue by cost (Dijkstra's pops are monotone): facts of cost c in bucket[c][0 .. bucketSize[c]). */
     private int[][] bucket = new int[64][];
     private int[] bucketSize = new int[64];
     private int current;
     private int highest;
     private int epoch;
-    private int[] helpfulOps = new int[16];
-    private int helpfulN;
 
     AdditiveFfHeuristic(SearchTask task) {
         super(task);
         this.t = task.relaxed;
         int nf = t.size;
         int no = t.count;
-        counted = new int[task.ops.length];
-        helpfulMark = new int[task.ops.length];
         cost = new int[nf];
         factEpoch = new int[nf];
         done = new int[nf];
@@ -62,20 +52,7 @@ final class AdditiveFfHeuristic extends FfHeuristic {
         preCount = rows.preCount;
         addStart = rows.addStart;
         addFacts = rows.addFacts;
-        opMark = new int[no];
-        factMark = new int[nf];
         goalMark = new int[nf];
-        stack = new int[nf];
-    }
-
-    @Override
-    int helpfulCount() {
-        return helpfulN;
-    }
-
-    @Override
-    int helpful(int i) {
-        return helpfulOps[i];
     }
 
     private void reach(int f, int c, int op) {
@@ -112,7 +89,7 @@ final class AdditiveFfHeuristic extends FfHeuristic {
     @Override
     int evaluate(int[] state, int[] goals) {
         epoch++;
-        helpfulN = 0;
+        extraction.clear();
         for (int c = 0; c <= highest; c++) bucketSize[c] = 0;
         current = 0;
         highest = 0;
@@ -161,40 +138,6 @@ final class AdditiveFfHeuristic extends FfHeuristic {
             }
         }
         if (missing > 0) return INFINITE;
-        int h = 0;
-        int sp = 0;
-        for (int g : goals) {
-            if (cost[g] > 0 && factMark[g] != epoch) {
-                factMark[g] = epoch;
-                stack[sp++] = g;
-            }
-        }
-        while (sp > 0) {
-            int o = supporter[stack[--sp]];
-            if (opMark[o] == epoch) continue;
-            opMark[o] = epoch;
-            // a conditional effect's relaxed operator counts as its action, once; a rule (-1) counts not
-            int taskOp = t.op[o];
-            if (taskOp >= 0 && counted[taskOp] != epoch) {
-                counted[taskOp] = epoch;
-                h++;
-            }
-            boolean applicable = true;
-            for (int p : t.pre[o]) {
-                if (cost[p] > 0) {
-                    applicable = false;
-                    if (factMark[p] != epoch) {
-                        factMark[p] = epoch;
-                        stack[sp++] = p;
-                    }
-                }
-            }
-            if (applicable && taskOp >= 0 && helpfulMark[taskOp] != epoch) {
-                helpfulMark[taskOp] = epoch;
-                if (helpfulN == helpfulOps.length) helpfulOps = java.util.Arrays.copyOf(helpfulOps, helpfulN * 2);
-                helpfulOps[helpfulN++] = taskOp;
-            }
-        }
-        return h;
+        return extraction.extract(goals, cost, supporter);
     }
 }

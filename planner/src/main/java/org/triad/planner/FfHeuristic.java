@@ -12,9 +12,8 @@ class FfHeuristic {
     static final int INFINITE = Integer.MAX_VALUE;
 
     private final RelaxedOps t;
-    /** Per task operator: epoch in which it was counted in the relaxed plan / made helpful. */
-    private final int[] counted;
-    private final int[] helpfulMark;
+    /** The relaxed plan's extraction, shared with {@link AdditiveFfHeuristic}. */
+    final RelaxedPlanExtraction extraction;
     private final int[] level;
     private final int[] factEpoch;
     private final int[] supporter;
@@ -26,20 +25,15 @@ class FfHeuristic {
     private final int[] preCount;
     private final int[] addStart;
     private final int[] addFacts;
-    private final int[] opMark;
     private final int[] factMark;
     private final int[] queue;
-    private final int[] stack;
     private int epoch;
-    private int[] helpful = new int[16];
-    private int helpfulCount;
 
     FfHeuristic(SearchTask task) {
         this.t = task.relaxed;
         int nf = t.size;
         int no = t.count;
-        counted = new int[task.ops.length];
-        helpfulMark = new int[task.ops.length];
+        extraction = new RelaxedPlanExtraction(task);
         level = new int[nf];
         factEpoch = new int[nf];
         supporter = new int[nf];
@@ -50,24 +44,22 @@ class FfHeuristic {
         preCount = rows.preCount;
         addStart = rows.addStart;
         addFacts = rows.addFacts;
-        opMark = new int[no];
         factMark = new int[nf];
         queue = new int[nf];
-        stack = new int[nf];
     }
 
     int helpfulCount() {
-        return helpfulCount;
+        return extraction.helpfulCount();
     }
 
     int helpful(int i) {
-        return helpful[i];
+        return extraction.helpful(i);
     }
 
     /** Relaxed plan length, or {@link #INFINITE} when the goals are unreachable even relaxed. */
     int evaluate(int[] state, int[] goals) {
         epoch++;
-        helpfulCount = 0;
+        extraction.clear();
         int head = 0;
         int tail = 0;
         for (int f : state) {
@@ -137,41 +129,7 @@ class FfHeuristic {
             return INFINITE;
         }
         for (int g : goals) goalMark[g] = 0;
-        int h = 0;
-        int sp = 0;
-        for (int g : goals) {
-            if (level[g] > 0 && factMark[g] != epoch) {
-                factMark[g] = epoch;
-                stack[sp++] = g;
-            }
-        }
-        while (sp > 0) {
-            int f = stack[--sp];
-            int o = supporter[f];
-            if (opMark[o] == epoch) continue;
-            opMark[o] = epoch;
-            int taskOp = t.op[o];
-            if (taskOp >= 0 && counted[taskOp] != epoch) {
-                counted[taskOp] = epoch;
-                h++;
-            }
-            boolean applicable = true;
-            for (int p : t.pre[o]) {
-                if (level[p] > 0) {
-                    applicable = false;
-                    if (factMark[p] != epoch) {
-                        factMark[p] = epoch;
-                        stack[sp++] = p;
-                    }
-                }
-            }
-            if (applicable && taskOp >= 0 && helpfulMark[taskOp] != epoch) {
-                helpfulMark[taskOp] = epoch;
-                if (helpfulCount == helpful.length) helpful = java.util.Arrays.copyOf(helpful, helpfulCount * 2);
-                helpful[helpfulCount++] = taskOp;
-            }
-        }
-        return h;
+        return extraction.extract(goals, level, supporter);
     }
 
     /**
