@@ -66,6 +66,8 @@ public final class RemoteAgv implements FailureExplaining {
     private int lastStateHeaderId = -1;
     private String lastFailure;
     private long orderToFirstState = -1;
+    /** An order this master gave up on (silence, a broken connection, a timeout) that the AGV may still be running. */
+    private String abandonedOrder;
 
     RemoteAgv(MqttLink link, String manufacturer, String serialNumber, VdaTimeouts timeouts) {
         this.link = link;
@@ -186,6 +188,7 @@ public final class RemoteAgv implements FailureExplaining {
         if (!ready(call)) {
             return false;
         }
+        awaitAbandonedOrderEnded();
         long sent = System.nanoTime();
         synchronized (lock) {
             orderToFirstState = -1;
@@ -211,6 +214,28 @@ public final class RemoteAgv implements FailureExplaining {
                     .allMatch(a -> s.actionState(a.actionId()).map(as -> as.actionStatus() == ActionStatus.FINISHED).orElse(false));
             return s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving() && actionsDone ? Outcome.DONE : Outcome.PENDING;
         }, orderId);
+    }
+
+    /**
+     * An AGV refuses a new order while it still runs one (VDA 5050 has no queue of orders), and the
+     * order given up on goes on after a broken connection, or up to its next node after a cancel: so
+     * the next order waits until the AGV reports it ended, at most an action's time, less if the AGV
+     * falls silent. Without this the re-plans after such a failure were refused at once, one after
+     * the other, and the task aborted while the robot was fine.
+     */
+    private void awaitAbandonedOrderEnded() {
+        synchronized (lock) {
+            if (abandonedOrder == null) {
+                return;
+            }
+        }
+        // silent: no state since its last state or its (re)connection; a frozen AGV is not waited for
+        await(() -> state == null || !abandonedOrder.equals(state.orderId())
+                || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving()
+                || System.nanoTime() - Math.max(stateNanos, connectionNanos) > seconds(timeouts.stateSeconds()), timeouts.actionSeconds());
+        synchronized (lock) {
+            abandonedOrder = null;
+        }
     }
 
     /** Whether the AGV is (or comes) online; otherwise records why not. */
@@ -267,6 +292,9 @@ public final class RemoteAgv implements FailureExplaining {
                 // the grace runs while this master is connected itself: after a broker restart the AGV's ONLINE comes after ours
                 if ((connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= sentNanos
                         && link.isConnected() && now - Math.max(connectionNanos, masterReconnectNanos) > seconds(timeouts.reconnectGraceSeconds())) {
+                    if (orderId != null) {
+                        abandonedOrder = orderId;
+                    }
                     return fail(String.format(Locale.ROOT, "AGV %s reported %s%s during %s and did not come back within %.1f s", name(), connection,
                             connection == ConnectionState.CONNECTIONBROKEN ? " (its last will)" : "", call, timeouts.reconnectGraceSeconds()));
                 }
@@ -297,6 +325,7 @@ public final class RemoteAgv implements FailureExplaining {
     /** Master control gave up on an order the AGV may still be executing (silence, timeout): it should stop it. */
     private boolean giveUp(String orderId, String why) {
         if (orderId != null) {
+            abandonedOrder = orderId;
             Action cancel = action("cancelOrder", Map.of());
             publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
                     manufacturer, serialNumber, List.of(cancel)));
