@@ -22,12 +22,6 @@ final class AdditiveFfHeuristic extends FfHeuristic {
     private final int[] supporter;
     /** Per operator, interleaved for locality: [3o] epoch of last touch, [3o+1] unmet preconditions, [3o+2] summed cost. */
     private final int[] opState;
-    /** Compressed rows as in {@link FfHeuristic}: operators with precondition f, adds of operator o. */
-    private final int[] preStart;
-    private final int[] preOps;
-    private final int[] preCount;
-    private final int[] addStart;
-    private final int[] addFacts;
     private final int[] goalMark;
     /** Bucket queue by cost (Dijkstra's pops are monotone): facts of cost c in bucket[c][0 .. bucketSize[c]). */
     private int[][] bucket = new int[64][];
@@ -46,12 +40,6 @@ final class AdditiveFfHeuristic extends FfHeuristic {
         done = new int[nf];
         supporter = new int[nf];
         opState = new int[3 * no];
-        RelaxedRows rows = new RelaxedRows(t);
-        preStart = rows.preStart;
-        preOps = rows.preOps;
-        preCount = rows.preCount;
-        addStart = rows.addStart;
-        addFacts = rows.addFacts;
         goalMark = new int[nf];
     }
 

@@ -19,12 +19,12 @@ class FfHeuristic {
     private final int[] supporter;
     /** Per operator, interleaved for locality: [2o] = epoch of last touch, [2o+1] = unsatisfied preconditions. */
     private final int[] opState;
-    /** Compressed rows: operators having fact f as a precondition are preOps[preStart[f] .. preStart[f+1]). */
-    private final int[] preStart;
-    private final int[] preOps;
-    private final int[] preCount;
-    private final int[] addStart;
-    private final int[] addFacts;
+    /** Compressed rows ({@link RelaxedRows}), read by {@link AdditiveFfHeuristic} too. */
+    final int[] preStart;
+    final int[] preOps;
+    final int[] preCount;
+    final int[] addStart;
+    final int[] addFacts;
     private final int[] factMark;
     private final int[] queue;
     private int epoch;
