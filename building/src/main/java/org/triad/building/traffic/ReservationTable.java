@@ -1,0 +1,572 @@
+package org.triad.building.traffic;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.function.DoubleSupplier;
+
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.Decision.Waiting;
+
+/**
+ * Who holds which resource of a {@link TrafficMap}, who waits for which, and the rule that keeps the
+ * waiting free of cycles (the module's README states it and argues why it cannot deadlock).
+ *
+ * <p>A robot holds what it stands on ({@link TrafficMap#standing}) and its <em>base</em>: the route it is
+ * allowed to drive, from the node it last passed to its <em>decision point</em>. It asks for its route one
+ * <em>stretch</em> at a time: from its decision point to the next stop node (or the route's end), all
+ * resources of the stretch at once or none. A request is granted when every resource it needs has room
+ * for it after the robots queued earlier for that resource; otherwise it queues in arrival order, unless
+ * queuing would close a cycle of robots waiting for each other, or the resource is blocked by a lost robot
+ * or an obstacle: then it is refused with the reason, and the robot's action fails (RefArc re-plans).
+ *
+ * <p>Not thread-safe: one owner (master control's traffic thread) calls it, or callers synchronize.
+ * Times are seconds on the given clock (simulated or wall-clock).
+ */
+public final class ReservationTable {
+    private final TrafficMap map;
+    private final DoubleSupplier clock;
+    private final Map<String, RobotState> robots = new LinkedHashMap<>();
+    private final Map<Resource, Set<String>> holders = new HashMap<>();
+    /** Requests waiting, in arrival order. */
+    private final TreeMap<Long, Request> queue = new TreeMap<>();
+    private final Map<Resource, String> blocked = new HashMap<>();
+    private final TrafficStats stats;
+    private long arrivals;
+
+    private static final class RobotState {
+        final String name;
+        String position;
+        /** base.get(0) == position; the last is the decision point. */
+        List<String> base;
+        Set<Resource> holding = new LinkedHashSet<>();
+        Map<Resource, Double> heldSince = new HashMap<>();
+        Request pending;
+        /** Why the robot is lost (its last will), or null while it works. */
+        String lost;
+
+        RobotState(String name, String position) {
+            this.name = name;
+            this.position = position;
+            this.base = List.of(position);
+        }
+
+        String decisionPoint() {
+            return base.get(base.size() - 1);
+        }
+    }
+
+    private record Request(long arrival, String robot, List<String> stretch, List<String> horizon, Set<Resource> needed, double since,
+            Set<Resource> firstBlocking) {
+        Request blockedBy(Set<Resource> blocking) {
+            return new Request(arrival, robot, stretch, horizon, needed, since, Set.copyOf(blocking));
+        }
+    }
+
+    /** What a change to the table set free: requests now granted, waiting requests now refused. */
+    public record Changes(List<Granted> granted, List<Refused> refused) {
+        public static final Changes NONE = new Changes(List.of(), List.of());
+
+        public Changes {
+            granted = List.copyOf(granted);
+            refused = List.copyOf(refused);
+        }
+
+        public boolean isEmpty() {
+            return granted.isEmpty() && refused.isEmpty();
+        }
+
+        Changes merge(Changes o) {
+            List<Granted> g = new ArrayList<>(granted);
+            g.addAll(o.granted);
+            List<Refused> r = new ArrayList<>(refused);
+            r.addAll(o.refused);
+            return new Changes(g, r);
+        }
+    }
+
+    public ReservationTable(TrafficMap map, DoubleSupplier clockSeconds) {
+        this.map = Objects.requireNonNull(map, "map");
+        this.clock = Objects.requireNonNull(clockSeconds, "clockSeconds");
+        this.stats = new TrafficStats(map);
+    }
+
+    public TrafficMap map() {
+        return map;
+    }
+
+    /** Waiting and holding times observed so far, and the expected wait of a step (the planner's congestion hook). */
+    public TrafficStats stats() {
+        return stats;
+    }
+
+    /**
+     * A robot appears standing at {@code node} and holds it (and the areas around it).
+     *
+     * @throws IllegalStateException when the robot is already on the map or the node has no room for it
+     */
+    public void place(String robot, String node) {
+        if (robots.containsKey(robot)) {
+            throw new IllegalStateException("robot " + robot + " is already on the traffic map, at node '" + robots.get(robot).position + "'");
+        }
+        Set<Resource> need = map.standing(node);
+        for (Resource r : need) {
+            if (holders(r).size() >= r.capacity()) {
+                throw new IllegalStateException("robot " + robot + " cannot be placed at node '" + node + "': " + r + " is full (held by "
+                        + String.join(", ", holders(r)) + ")");
+            }
+        }
+        RobotState s = new RobotState(robot, node);
+        robots.put(robot, s);
+        hold(s, need);
+    }
+
+    /**
+     * Asks for the next stretch of {@code route}, which starts at the robot's decision point: granted at once,
+     * queued, or refused (with the reason). A robot has at most one request at a time.
+     *
+     * @throws IllegalArgumentException for a route that does not start at the decision point or leaves the edges of the map
+     * @throws IllegalStateException    for a robot not on the map, lost, or already waiting
+     */
+    public Decision request(String robot, List<String> route) {
+        RobotState s = robot(robot);
+        if (s.lost != null) {
+            throw new IllegalStateException("robot " + robot + " is lost (" + s.lost + ") and asks for nothing");
+        }
+        if (s.pending != null) {
+            throw new IllegalStateException("robot " + robot + " already waits for " + s.pending.stretch + "; cancel that first");
+        }
+        if (route.size() < 2) {
+            throw new IllegalArgumentException("a route to request has at least two nodes, got " + route);
+        }
+        if (!route.get(0).equals(s.decisionPoint())) {
+            throw new IllegalArgumentException("robot " + robot + "'s route starts at '" + route.get(0) + "' but its decision point is '"
+                    + s.decisionPoint() + "'");
+        }
+        int end = 1;
+        while (end < route.size() - 1 && !map.isStop(route.get(end))) {
+            end++;
+        }
+        List<String> stretch = List.copyOf(route.subList(0, end + 1));
+        Set<Resource> needed = new LinkedHashSet<>();
+        for (int i = 0; i + 1 < stretch.size(); i++) {
+            needed.addAll(map.step(stretch.get(i), stretch.get(i + 1)));
+        }
+        for (int i = end + 1; i < route.size(); i++) {
+            map.step(route.get(i - 1), route.get(i)); // the horizon must be drivable too
+        }
+        needed.removeAll(s.holding);
+        Request q = new Request(arrivals++, robot, stretch, List.copyOf(route.subList(end, route.size())), needed, clock.getAsDouble(), Set.of());
+        Optional<String> blockedWhy = blockedReason(q);
+        if (blockedWhy.isPresent()) {
+            return new Refused(robot, blockedWhy.get());
+        }
+        if (fits(q)) {
+            return grant(s, q);
+        }
+        List<String> cycle = cycleThrough(q);
+        if (!cycle.isEmpty()) {
+            return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0));
+        }
+        q = q.blockedBy(new LinkedHashSet<>(waitOf(q).blocking()));
+        queue.put(q.arrival, q);
+        s.pending = q;
+        return new Waiting(robot, waitOf(q));
+    }
+
+    /** Whether {@code node} lies on the robot's base (behind or at its decision point): where it may drive. */
+    public boolean released(String robot, String node) {
+        return robot(robot).base.contains(node);
+    }
+
+    /** The robot's base: from the node it last passed to its decision point. */
+    public List<String> base(String robot) {
+        return robot(robot).base;
+    }
+
+    public String decisionPoint(String robot) {
+        return robot(robot).decisionPoint();
+    }
+
+    /**
+     * The robot reports it passed {@code node} of its base: what lies behind it is released, and requests
+     * waiting for it may now be granted.
+     *
+     * @throws IllegalStateException when the node is not on its base (a robot beyond its base: see {@link #released})
+     */
+    public Changes passed(String robot, String node) {
+        RobotState s = robot(robot);
+        int at = s.base.indexOf(node);
+        if (at < 0) {
+            throw new IllegalStateException("robot " + robot + " reports node '" + node + "', which is not on its base " + s.base);
+        }
+        if (at == 0) {
+            return Changes.NONE;
+        }
+        s.position = node;
+        s.base = List.copyOf(s.base.subList(at, s.base.size()));
+        rehold(s);
+        return regrant();
+    }
+
+    /**
+     * The robot's base ends at {@code node} from now on (its order was cancelled and it stops there): what lies
+     * beyond is released, and its waiting request (if any) withdrawn.
+     */
+    public Changes truncate(String robot, String node) {
+        RobotState s = robot(robot);
+        int at = s.base.indexOf(node);
+        if (at < 0) {
+            throw new IllegalStateException("robot " + robot + " cannot stop at node '" + node + "', which is not on its base " + s.base);
+        }
+        withdraw(s);
+        s.base = List.copyOf(s.base.subList(0, at + 1));
+        rehold(s);
+        return regrant();
+    }
+
+    /** Withdraws the robot's waiting request (it waited too long, or its action was cancelled). */
+    public Changes cancel(String robot) {
+        RobotState s = robot(robot);
+        if (s.pending == null) {
+            return Changes.NONE;
+        }
+        withdraw(s);
+        return regrant();
+    }
+
+    /**
+     * The robot is lost (its last will: it is down wherever it is). Its base ahead is released, but it still
+     * occupies where it stands or drives (node, edge, the areas around), so no robot is sent into it; requests
+     * that need that place are refused with {@code why}. {@link #remove} clears the place when it is taken away.
+     */
+    public Changes lost(String robot, String why) {
+        RobotState s = robot(robot);
+        withdraw(s);
+        s.lost = Objects.requireNonNull(why, "why");
+        Set<Resource> wreck = new LinkedHashSet<>(map.standing(s.position));
+        if (s.base.size() > 1) {
+            wreck.addAll(map.step(s.position, s.base.get(1)));
+        }
+        s.base = List.of(s.position);
+        release(s, new LinkedHashSet<>(s.holding));
+        hold(s, wreck);
+        return refuseBlocked().merge(regrant());
+    }
+
+    /** The robot leaves the map (taken away, or shut down where it stood): everything it holds is released. */
+    public Changes remove(String robot) {
+        RobotState s = robot(robot);
+        withdraw(s);
+        release(s, new LinkedHashSet<>(s.holding));
+        robots.remove(robot);
+        return regrant();
+    }
+
+    /** Blocks a resource by something that is not a robot (an obstacle, a lift out of order): requests needing it are refused. */
+    public Changes block(Resource r, String why) {
+        blocked.put(r, Objects.requireNonNull(why, "why"));
+        return refuseBlocked();
+    }
+
+    public Changes unblock(Resource r) {
+        blocked.remove(r);
+        return regrant();
+    }
+
+    /** The robots holding this resource (a lost robot too). */
+    public Set<String> holders(Resource r) {
+        return holders.getOrDefault(r, Set.of());
+    }
+
+    /** What the robot holds. */
+    public Set<Resource> holding(String robot) {
+        return Set.copyOf(robot(robot).holding);
+    }
+
+    public Set<String> robots() {
+        return robots.keySet();
+    }
+
+    /** The robot's waiting request, if any, with its reason. */
+    public Optional<Wait> waiting(String robot) {
+        RobotState s = robot(robot);
+        return s.pending == null ? Optional.empty() : Optional.of(waitOf(s.pending));
+    }
+
+    /** Every waiting request, in arrival order. */
+    public List<Wait> waits() {
+        return queue.values().stream().map(this::waitOf).toList();
+    }
+
+    /** The waiting requests older than {@code boundSeconds}: master control fails their actions with {@link Wait#reason()}. */
+    public List<Wait> overdue(double boundSeconds) {
+        double now = clock.getAsDouble();
+        return waits().stream().filter(w -> w.waited(now) > boundSeconds).toList();
+    }
+
+    /**
+     * Who waits for whom, the edges the no-deadlock rule keeps free of cycles: a robot waits for a robot that
+     * will still hold a resource it needs when it stops (its decision point and the areas there), and for a
+     * robot queued earlier for a resource it needs; both only where that resource has no room left for it.
+     */
+    public Map<String, Set<String>> waitsFor() {
+        Map<String, Set<String>> g = new LinkedHashMap<>();
+        for (Request q : queue.values()) {
+            g.put(q.robot, blockersOf(q, new LinkedHashSet<>()));
+        }
+        return g;
+    }
+
+    /**
+     * The seconds a robot asking now to drive from {@code from} to its neighbour {@code to} can expect to wait:
+     * for each resource of the step without room for one more robot, the robots ahead of it (holders beyond
+     * capacity and those queued for it) times the mean time one robot held it, shared among its capacity.
+     * The congestion hook for planning: an edge's action cost grows with it (see the README).
+     */
+    public double expectedWait(String from, String to) {
+        double wait = 0;
+        for (Resource r : map.step(from, to)) {
+            int queued = 0;
+            for (Request w : queue.values()) {
+                if (w.needed.contains(r)) {
+                    queued++;
+                }
+            }
+            int ahead = holders(r).size() + queued + 1 - r.capacity();
+            if (blocked.containsKey(r)) {
+                return Double.POSITIVE_INFINITY;
+            }
+            if (ahead > 0) {
+                wait = Math.max(wait, ahead * stats.meanHold(r) / r.capacity());
+            }
+        }
+        return wait;
+    }
+
+    // ---- the rule ------------------------------------------------------------------------------
+
+    /** Room for every resource the request needs after the robots queued earlier for it have theirs. */
+    private boolean fits(Request q) {
+        for (Resource r : q.needed) {
+            if (!room(r, q)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean room(Resource r, Request q) {
+        int earlier = 0;
+        for (Request w : queue.headMap(q.arrival, false).values()) {
+            if (w.needed.contains(r)) {
+                earlier++;
+            }
+        }
+        return holders(r).size() + earlier + 1 <= r.capacity();
+    }
+
+    private Set<String> blockersOf(Request q, Set<Resource> blockingOut) {
+        Set<String> out = new LinkedHashSet<>();
+        for (Resource r : q.needed) {
+            if (room(r, q)) {
+                continue;
+            }
+            blockingOut.add(r);
+            for (String h : holders(r)) {
+                RobotState hs = robots.get(h);
+                if (!h.equals(q.robot) && hs.lost == null && map.standing(hs.decisionPoint()).contains(r)) {
+                    out.add(h);
+                }
+            }
+            for (Request w : queue.headMap(q.arrival, false).values()) {
+                if (w.needed.contains(r)) {
+                    out.add(w.robot);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The cycle of waits queuing {@code q} would close (robot names, q's robot first), or empty. */
+    private List<String> cycleThrough(Request q) {
+        Map<String, Set<String>> g = waitsFor();
+        g.put(q.robot, blockersOf(q, new LinkedHashSet<>()));
+        Map<String, String> parent = new HashMap<>();
+        Deque<String> todo = new ArrayDeque<>();
+        Set<String> seen = new HashSet<>();
+        todo.add(q.robot);
+        while (!todo.isEmpty()) {
+            String at = todo.poll();
+            for (String next : g.getOrDefault(at, Set.of())) {
+                if (next.equals(q.robot)) {
+                    List<String> cycle = new ArrayList<>();
+                    for (String c = at; c != null; c = parent.get(c)) {
+                        cycle.add(0, c);
+                    }
+                    return cycle;
+                }
+                if (seen.add(next)) {
+                    parent.put(next, at);
+                    todo.add(next);
+                }
+            }
+        }
+        return List.of();
+    }
+
+    private String describeCycle(List<String> cycle, Request q) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < cycle.size(); i++) {
+            String from = cycle.get(i);
+            String to = cycle.get((i + 1) % cycle.size());
+            Request r = from.equals(q.robot) ? q : robots.get(from).pending;
+            Set<Resource> blocking = new LinkedHashSet<>();
+            blockersOf(r, blocking);
+            Set<Resource> held = new LinkedHashSet<>(blocking);
+            held.retainAll(robots.get(to).holding);
+            if (i > 0) {
+                b.append(", ");
+            }
+            b.append(from).append(" would wait for ").append(to)
+                    .append(held.isEmpty() ? " (queued ahead)" : " (" + String.join(", ", held.stream().map(Resource::toString).toList()) + ")");
+        }
+        return b.toString();
+    }
+
+    private Optional<String> blockedReason(Request q) {
+        for (Resource r : q.needed) {
+            if (blocked.containsKey(r)) {
+                return Optional.of(r + " is blocked: " + blocked.get(r));
+            }
+            List<String> wrecks = holders(r).stream().filter(h -> robots.get(h).lost != null).toList();
+            if (!wrecks.isEmpty() && wrecks.size() >= r.capacity()) {
+                String h = wrecks.get(0);
+                return Optional.of(r + " is blocked by robot " + h + ", lost there (" + robots.get(h).lost + ")");
+            }
+        }
+        return Optional.empty();
+    }
+
+    private Granted grant(RobotState s, Request q) {
+        List<String> base = new ArrayList<>(s.base);
+        base.addAll(q.stretch.subList(1, q.stretch.size()));
+        s.base = List.copyOf(base);
+        rehold(s);
+        return new Granted(s.name, q.stretch, q.horizon.size() > 1 ? q.horizon : List.of());
+    }
+
+    /** Grants the waiting requests that now fit, in arrival order. */
+    private Changes regrant() {
+        List<Granted> granted = new ArrayList<>();
+        boolean again = true;
+        while (again) {
+            again = false;
+            for (Request q : List.copyOf(queue.values())) {
+                if (fits(q)) {
+                    queue.remove(q.arrival);
+                    RobotState s = robots.get(q.robot);
+                    s.pending = null;
+                    stats.waited(q.firstBlocking, clock.getAsDouble() - q.since);
+                    granted.add(grant(s, q));
+                    again = true;
+                    break;
+                }
+            }
+        }
+        return new Changes(granted, List.of());
+    }
+
+    private Changes refuseBlocked() {
+        List<Refused> refused = new ArrayList<>();
+        for (Request q : List.copyOf(queue.values())) {
+            Optional<String> why = blockedReason(q);
+            if (why.isPresent()) {
+                withdraw(robots.get(q.robot));
+                refused.add(new Refused(q.robot, why.get()));
+            }
+        }
+        return new Changes(List.of(), refused).merge(regrant());
+    }
+
+    private void withdraw(RobotState s) {
+        if (s.pending != null) {
+            queue.remove(s.pending.arrival);
+            s.pending = null;
+        }
+    }
+
+    /** Holds exactly what the robot's position and base cover. */
+    private void rehold(RobotState s) {
+        Set<Resource> want = new LinkedHashSet<>(map.standing(s.position));
+        for (int i = 0; i + 1 < s.base.size(); i++) {
+            want.addAll(map.step(s.base.get(i), s.base.get(i + 1)));
+        }
+        Set<Resource> gone = new LinkedHashSet<>(s.holding);
+        gone.removeAll(want);
+        release(s, gone);
+        want.removeAll(s.holding);
+        hold(s, want);
+    }
+
+    private void hold(RobotState s, Set<Resource> rs) {
+        double now = clock.getAsDouble();
+        for (Resource r : rs) {
+            if (s.holding.add(r)) {
+                holders.computeIfAbsent(r, k -> new LinkedHashSet<>()).add(s.name);
+                s.heldSince.put(r, now);
+            }
+        }
+    }
+
+    private void release(RobotState s, Set<Resource> rs) {
+        double now = clock.getAsDouble();
+        for (Resource r : rs) {
+            if (s.holding.remove(r)) {
+                Set<String> h = holders.get(r);
+                h.remove(s.name);
+                if (h.isEmpty()) {
+                    holders.remove(r);
+                }
+                stats.held(r, now - s.heldSince.remove(r));
+            }
+        }
+    }
+
+    private Wait waitOf(Request q) {
+        Set<Resource> blocking = new LinkedHashSet<>();
+        Set<String> blockers = new LinkedHashSet<>();
+        for (Resource r : q.needed) {
+            if (!room(r, q)) {
+                blocking.add(r);
+                blockers.addAll(holders(r));
+                for (Request w : queue.headMap(q.arrival, false).values()) {
+                    if (w.needed.contains(r)) {
+                        blockers.add(w.robot);
+                    }
+                }
+            }
+        }
+        blockers.remove(q.robot);
+        return new Wait(q.robot, q.stretch, q.since, List.copyOf(blocking), List.copyOf(blockers));
+    }
+
+    private RobotState robot(String robot) {
+        RobotState s = robots.get(robot);
+        if (s == null) {
+            throw new IllegalStateException("robot " + robot + " is not on the traffic map (place it first)");
+        }
+        return s;
+    }
+}

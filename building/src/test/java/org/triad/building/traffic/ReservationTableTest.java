@@ -1,0 +1,283 @@
+package org.triad.building.traffic;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Set;
+
+import org.junit.jupiter.api.Test;
+
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.Decision.Waiting;
+import org.triad.building.traffic.ReservationTable.Changes;
+import org.triad.building.traffic.Resource.Kind;
+
+class ReservationTableTest {
+    private final double[] now = { 0 };
+
+    private ReservationTable table(TrafficMap map) {
+        return new ReservationTable(map, () -> now[0]);
+    }
+
+    private static List<String> route(String... nodes) {
+        return List.of(nodes);
+    }
+
+    /** Drives the robot along its whole base, node by node, collecting what that set free. */
+    private static Changes driveBase(ReservationTable t, String robot) {
+        Changes all = Changes.NONE;
+        for (String n : List.copyOf(t.base(robot)).subList(1, t.base(robot).size())) {
+            all = all.merge(t.passed(robot, n));
+        }
+        return all;
+    }
+
+    @Test
+    void headToHeadOnASingleLaneTheSecondWaitsAtTheHallAndGoesWhenTheFirstIsThrough() {
+        TrafficMap map = Maps.singleLane(2);
+        ReservationTable t = table(map);
+        t.place("r1", "hall-w");
+        t.place("r2", "hall-e");
+        Granted g1 = assertInstanceOf(Granted.class, t.request("r1", route("hall-w", "c1", "c2", "hall-e", "side-e")));
+        assertEquals(route("hall-w", "c1", "c2", "hall-e"), g1.stretch(), "the whole corridor at once, up to the next hall");
+        assertEquals(route("hall-e", "side-e"), g1.horizon());
+        Waiting w2 = assertInstanceOf(Waiting.class, t.request("r2", route("hall-e", "c2", "c1", "hall-w")));
+        assertEquals(List.of(map.area("west").orElseThrow(), map.edge("c2", "hall-e").orElseThrow(), map.node("c2"),
+                map.edge("c1", "c2").orElseThrow(), map.node("c1"), map.edge("hall-w", "c1").orElseThrow()).stream().sorted(
+                        java.util.Comparator.comparing(Resource::toString)).toList(),
+                w2.queued().blocking().stream().sorted(java.util.Comparator.comparing(Resource::toString)).toList());
+        assertEquals(List.of("r1"), w2.queued().blockers());
+        assertTrue(w2.queued().reason().startsWith("r2 waits at hall-e for "), w2.queued().reason());
+        assertFalse(t.released("r2", "c2"), "a waiting robot may not drive into the corridor");
+
+        now[0] = 12;
+        assertTrue(t.passed("r1", "c1").isEmpty());
+        assertTrue(t.passed("r1", "c2").isEmpty(), "the corridor is held until r1 is out of it");
+        Changes out = t.passed("r1", "hall-e");
+        assertEquals(List.of("r2"), out.granted().stream().map(Granted::robot).toList());
+        assertEquals(route("hall-e", "c2", "c1", "hall-w"), t.base("r2"));
+        assertEquals(Set.of("r2"), t.holders(map.area("west").orElseThrow()));
+        assertEquals(List.of(12.0), t.stats().waits(Kind.CORRIDOR));
+        driveBase(t, "r2");
+        assertEquals(route("hall-w"), t.base("r2"));
+        assertTrue(t.holders(map.area("west").orElseThrow()).isEmpty());
+    }
+
+    @Test
+    void headToHeadBetweenNodesForOneRobotIsRefusedAsADeadlockAndResolvedByYieldingToASideNode() {
+        ReservationTable t = table(Maps.singleLane(1));
+        t.place("r1", "hall-w");
+        t.place("r2", "hall-e");
+        assertInstanceOf(Waiting.class, t.request("r1", route("hall-w", "c1", "c2", "hall-e", "side-e")));
+        Refused r = assertInstanceOf(Refused.class, t.request("r2", route("hall-e", "c2", "c1", "hall-w", "side-w")));
+        assertEquals("deadlock avoided: r2 would wait for r1 (node 'hall-w'), r1 would wait for r2 (node 'hall-e'); r2 does not wait at hall-e",
+                r.reason());
+        assertTrue(t.waiting("r2").isEmpty());
+        // r2 yields to its side room; the hall it leaves lets r1 through
+        assertInstanceOf(Granted.class, t.request("r2", route("hall-e", "side-e")));
+        Changes c = t.passed("r2", "side-e");
+        assertEquals(List.of("r1"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(route("hall-w", "c1", "c2", "hall-e"), t.base("r1"));
+    }
+
+    @Test
+    void threeRobotsInARingOfThreeCorridorsNeverWaitInACycle() {
+        ReservationTable t = table(Maps.ring(1));
+        t.place("r1", "n1");
+        t.place("r2", "n2");
+        t.place("r3", "n3");
+        assertInstanceOf(Waiting.class, t.request("r1", route("n1", "m12", "n2")));
+        assertInstanceOf(Waiting.class, t.request("r2", route("n2", "m23", "n3")));
+        Refused r = assertInstanceOf(Refused.class, t.request("r3", route("n3", "m31", "n1")));
+        assertTrue(r.reason().startsWith("deadlock avoided: r3 would wait for r1 (node 'n1'), r1 would wait for r2 (node 'n2'), r2 would wait for r3"),
+                r.reason());
+        assertEquals(Set.of(), Graphs.cycle(t.waitsFor()));
+    }
+
+    @Test
+    void threeRobotsInARingWithHallsForTwoAllGoRoundTwice() {
+        ReservationTable t = table(Maps.ring(2));
+        List<String> ring = route("n1", "m12", "n2", "m23", "n3", "m31", "n1", "m12", "n2", "m23", "n3", "m31", "n1");
+        String[] robots = { "r1", "r2", "r3" };
+        for (int i = 0; i < 3; i++) {
+            t.place(robots[i], ring.get(2 * i));
+        }
+        int[] at = new int[3];
+        int moves = 0;
+        while (moves < 1000 && (at[0] < 12 || at[1] < 12 || at[2] < 12)) {
+            for (int i = 0; i < 3; i++) {
+                String r = robots[i];
+                if (t.base(r).size() > 1) {
+                    t.passed(r, t.base(r).get(1));
+                    at[i]++;
+                    moves++;
+                } else if (at[i] < 12 && t.waiting(r).isEmpty()) {
+                    List<String> route = rotated(ring, 2 * i).subList(at[i], 13);
+                    Decision d = t.request(r, route);
+                    assertFalse(d instanceof Refused, d.toString());
+                }
+            }
+        }
+        assertEquals(List.of(12, 12, 12), List.of(at[0], at[1], at[2]), "every robot went round twice");
+    }
+
+    private static List<String> rotated(List<String> ring, int by) {
+        List<String> loop = ring.subList(0, 6);
+        List<String> r = new java.util.ArrayList<>();
+        for (int i = 0; i <= 12; i++) {
+            r.add(loop.get((i + by) % 6));
+        }
+        return r;
+    }
+
+    @Test
+    void twoRobotsForTheLiftOneRidesTheNextWaitsAndRidesNextInOrder() {
+        TrafficMap map = Maps.lift();
+        Resource lift = map.area("lift").orElseThrow();
+        ReservationTable t = table(map);
+        t.place("r1", "f1");
+        t.place("r2", "f1");
+        t.place("r3", "f1");
+        List<String> up = route("f1", "lift-1", "lift-2", "f2");
+        assertEquals(up, assertInstanceOf(Granted.class, t.request("r1", up)).stretch(), "the whole ride at once: nobody waits in the cabin");
+        Waiting w2 = assertInstanceOf(Waiting.class, t.request("r2", up));
+        assertTrue(w2.queued().reason().contains("lift 'lift'"), w2.queued().reason());
+        Waiting w3 = assertInstanceOf(Waiting.class, t.request("r3", up));
+        assertEquals(List.of("r1", "r2"), w3.queued().blockers(), "r3 queues behind r2");
+        assertEquals(Set.of("r1"), t.holders(lift));
+        assertTrue(t.passed("r1", "lift-1").isEmpty());
+        assertTrue(t.passed("r1", "lift-2").isEmpty());
+        assertEquals(List.of("r2"), t.passed("r1", "f2").granted().stream().map(Granted::robot).toList(), "the lift goes to the first in line");
+        assertEquals(Set.of("r2"), t.holders(lift));
+        assertEquals(List.of("r3"), driveBase(t, "r2").granted().stream().map(Granted::robot).toList());
+        driveBase(t, "r3");
+        assertEquals(List.of("f2", "f2", "f2"), List.of(t.base("r1").get(0), t.base("r2").get(0), t.base("r3").get(0)));
+    }
+
+    @Test
+    void aLaterRequestDoesNotOvertakeAnEarlierOneForTheSameResourceButMayUseSpareCapacity() {
+        TrafficMap map = TrafficMap.builder().node("a", 3).node("b").node("c", 3).edge("ab", "a", "b", 3).edge("bc", "b", "c", 3)
+                .area(Kind.DOOR, "door", 1, "b").build();
+        ReservationTable t = table(map);
+        t.place("r1", "a");
+        t.place("r2", "a");
+        t.place("r3", "c");
+        assertInstanceOf(Granted.class, t.request("r1", route("a", "b", "c")));
+        assertInstanceOf(Waiting.class, t.request("r2", route("a", "b", "c")));
+        Waiting w3 = assertInstanceOf(Waiting.class, t.request("r3", route("c", "b", "a")));
+        assertEquals(List.of("r1", "r2"), w3.queued().blockers());
+        driveBase(t, "r1");
+        assertEquals(route("a", "b", "c"), t.base("r2"));
+        assertTrue(t.waiting("r3").isPresent());
+    }
+
+    @Test
+    void aRobotLostInTheCorridorKeepsItsPlaceOthersAreRefusedWithTheReasonAndGoOnWhenItIsTakenAway() {
+        TrafficMap map = Maps.singleLane(3);
+        Resource corridor = map.area("west").orElseThrow();
+        ReservationTable t = table(map);
+        t.place("r1", "hall-w");
+        t.place("r2", "hall-e");
+        t.place("r3", "hall-e");
+        t.request("r1", route("hall-w", "c1", "c2", "hall-e"));
+        t.passed("r1", "c1");
+        assertInstanceOf(Waiting.class, t.request("r2", route("hall-e", "c2", "c1", "hall-w")));
+        Changes c = t.lost("r1", "CONNECTIONBROKEN (its last will)");
+        assertEquals(List.of("r2"), c.refused().stream().map(Refused::robot).toList());
+        assertEquals("corridor 'west' is blocked by robot r1, lost there (CONNECTIONBROKEN (its last will))", c.refused().get(0).reason());
+        assertFalse(t.holders(map.node("hall-e")).contains("r1"), "its base ahead is freed");
+        assertEquals(Set.of("r1"), t.holders(corridor), "nobody is sent into it");
+        assertInstanceOf(Refused.class, t.request("r2", route("hall-e", "c2", "c1", "hall-w")));
+        assertInstanceOf(Granted.class, t.request("r3", route("hall-e", "side-e")), "the others continue");
+        assertThrows(IllegalStateException.class, () -> t.request("r1", route("c1", "c2")));
+        t.remove("r1");
+        assertInstanceOf(Granted.class, t.request("r2", route("hall-e", "c2", "c1", "hall-w")));
+    }
+
+    @Test
+    void anObstacleBlocksAResourceUntilCleared() {
+        TrafficMap map = Maps.lift();
+        Resource lift = map.area("lift").orElseThrow();
+        ReservationTable t = table(map);
+        t.place("r1", "f1");
+        t.place("r2", "f1");
+        t.request("r1", route("f1", "lift-1", "lift-2", "f2"));
+        t.request("r2", route("f1", "lift-1", "lift-2", "f2"));
+        Changes c = t.block(lift, "the lift did not arrive within 60 s");
+        assertEquals("lift 'lift' is blocked: the lift did not arrive within 60 s", c.refused().get(0).reason());
+        assertEquals(Double.POSITIVE_INFINITY, t.expectedWait("f1", "lift-1"));
+        t.unblock(lift);
+        assertInstanceOf(Waiting.class, t.request("r2", route("f1", "lift-1", "lift-2", "f2")));
+    }
+
+    @Test
+    void aWaitLongerThanTheBoundIsReportedWithItsReasonAndCanBeWithdrawn() {
+        ReservationTable t = table(Maps.singleLane(2));
+        t.place("r1", "hall-w");
+        t.place("r2", "hall-e");
+        t.request("r1", route("hall-w", "c1", "c2", "hall-e"));
+        now[0] = 5;
+        t.request("r2", route("hall-e", "c2", "c1", "hall-w"));
+        now[0] = 60;
+        assertEquals(List.of(), t.overdue(60));
+        now[0] = 66;
+        List<Wait> late = t.overdue(60);
+        assertEquals(List.of("r2"), late.stream().map(Wait::robot).toList());
+        assertEquals(61.0, late.get(0).waited(now[0]));
+        assertTrue(late.get(0).reason().contains("corridor 'west'") && late.get(0).reason().contains("r1"), late.get(0).reason());
+        t.cancel("r2");
+        assertEquals(List.of(), t.waits());
+    }
+
+    @Test
+    void aCancelledOrderStopsTheRobotAtANodeOfItsBaseAndFreesTheRest() {
+        TrafficMap map = Maps.singleLane(2);
+        ReservationTable t = table(map);
+        t.place("r1", "hall-w");
+        t.request("r1", route("hall-w", "c1", "c2", "hall-e"));
+        t.passed("r1", "c1");
+        t.truncate("r1", "c2");
+        assertEquals(route("c1", "c2"), t.base("r1"));
+        assertFalse(t.holders(map.node("hall-e")).contains("r1"));
+        assertTrue(t.released("r1", "c2"));
+        assertFalse(t.released("r1", "hall-e"), "beyond the base: a robot reporting it is a rogue");
+        assertThrows(IllegalStateException.class, () -> t.passed("r1", "hall-e"));
+    }
+
+    @Test
+    void theExpectedWaitOfAStepGrowsWithTheQueue() {
+        TrafficMap map = Maps.lift();
+        ReservationTable t = table(map);
+        for (String r : List.of("r1", "r2", "r3")) {
+            t.place(r, "f1");
+        }
+        List<String> up = route("f1", "lift-1", "lift-2", "f2");
+        t.request("r1", up);
+        now[0] = 30;
+        driveBase(t, "r1"); // the lift was held 30 s
+        assertEquals(0.0, t.expectedWait("f1", "lift-1"), "free: no wait");
+        t.request("r2", up);
+        assertEquals(30.0, t.expectedWait("f1", "lift-1"));
+        t.request("r3", up);
+        assertEquals(60.0, t.expectedWait("f1", "lift-1"));
+    }
+
+    @Test
+    void misuseIsAClearError() {
+        ReservationTable t = table(Maps.singleLane(1));
+        t.place("r1", "hall-w");
+        assertEquals("robot r2 cannot be placed at node 'hall-w': node 'hall-w' is full (held by r1)",
+                assertThrows(IllegalStateException.class, () -> t.place("r2", "hall-w")).getMessage());
+        assertEquals("robot r1's route starts at 'c1' but its decision point is 'hall-w'",
+                assertThrows(IllegalArgumentException.class, () -> t.request("r1", route("c1", "c2"))).getMessage());
+        assertEquals("no edge joins node 'hall-w' and node 'c2' on the traffic map",
+                assertThrows(IllegalArgumentException.class, () -> t.request("r1", route("hall-w", "c2"))).getMessage());
+        assertEquals("robot r9 is not on the traffic map (place it first)",
+                assertThrows(IllegalStateException.class, () -> t.request("r9", route("hall-w", "c1"))).getMessage());
+    }
+}
