@@ -8,6 +8,7 @@ val triadVersion: String by project
 dependencies {
     api("org.triad:triad-runtime:$triadVersion")
     api("org.triad:triad-refarc:$triadVersion")
+    api("org.triad:triad-building:$triadVersion") // traffic control: the reservation table behind orders with base and horizon
     api("org.eclipse.paho:org.eclipse.paho.client.mqttv3:1.2.5")
     api("com.fasterxml.jackson.core:jackson-databind:2.17.2")
     api("com.networknt:json-schema-validator:1.5.6")

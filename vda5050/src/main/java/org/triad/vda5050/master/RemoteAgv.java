@@ -184,6 +184,58 @@ public final class RemoteAgv implements FailureExplaining {
         }, null);
     }
 
+    /**
+     * Drives {@code route} (node ids, the first where the AGV stands) under traffic control, as one order whose
+     * base is what {@code traffic} reserved for it and whose horizon is the rest; the base grows by order
+     * updates as further stretches are granted, and what the AGV passes is released behind it. Waiting for a
+     * resource is not a failure; the call fails when traffic control refuses a stretch (a wait that would
+     * deadlock, a place blocked by a lost robot or an obstacle), when the robot waits longer than the bound
+     * (the reason names what it waited for and who held it), when the AGV drives beyond its base (a safety
+     * error: it is stopped at once with {@code startPause}), and for every reason {@link #drive} fails.
+     */
+    public boolean driveRoute(List<String> route, TrafficControl traffic) {
+        if (route.size() < 2) {
+            throw new IllegalArgumentException("a route has at least two nodes, got " + route);
+        }
+        String call = "drive " + String.join(" -> ", route);
+        if (!ready(call)) {
+            return false;
+        }
+        awaitAbandonedOrderEnded();
+        synchronized (lock) {
+            lastFailure = null;
+            orderToFirstState = -1;
+        }
+        if (!traffic.place(name(), route.get(0)) || !traffic.decisionPoint(name()).equals(route.get(0))) {
+            synchronized (lock) {
+                return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
+                        + (traffic.read(t -> t.robots().contains(name())) ? traffic.decisionPoint(name()) : "?")
+                        + "' on the traffic map, or its node has no room");
+            }
+        }
+        long sent = System.nanoTime();
+        RouteDrive drive = new RouteDrive(name(), route, nextId("order"), traffic,
+                (id, update, nodes, edges) -> publish(Topic.ORDER, new Order(headerIds.next(Topic.ORDER), HeaderIds.now(), Header.VERSION,
+                        manufacturer, serialNumber, id, update, null, nodes, edges)),
+                why -> publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
+                        manufacturer, serialNumber, List.of(action("startPause", Map.of())))));
+        Optional<String> refused = drive.start();
+        if (refused.isPresent()) {
+            traffic.stopAt(name(), route.get(0));
+            synchronized (lock) {
+                return fail(call + " on AGV " + name() + " refused by traffic control: " + refused.get());
+            }
+        }
+        boolean ok = awaitOutcome(call, sent, s -> {
+            RouteDrive.Verdict v = drive.onState(s);
+            return v.done() ? Outcome.DONE : v.failure() != null ? Outcome.failed(v.failure()) : Outcome.PENDING;
+        }, drive.orderId(), true);
+        if (!ok) {
+            drive.abandon();
+        }
+        return ok;
+    }
+
     private boolean runOrder(String orderId, List<Node> nodes, List<Edge> edges, List<Action> actions, String call) {
         if (!ready(call)) {
             return false;
@@ -265,12 +317,17 @@ public final class RemoteAgv implements FailureExplaining {
 
     /** Waits for the verdict on the AGV's states; also catches rejections (errors naming an order it did not take), silence and broken connections. */
     private boolean awaitOutcome(String call, long sentNanos, Function<AgvState, Outcome> verdict, String orderId) {
+        return awaitOutcome(call, sentNanos, verdict, orderId, false);
+    }
+
+    /** @param anyState whether the verdict also sees states older than the call (traffic decisions do not wait for the AGV) */
+    private boolean awaitOutcome(String call, long sentNanos, Function<AgvState, Outcome> verdict, String orderId, boolean anyState) {
         long deadline = sentNanos + seconds(timeouts.actionSeconds());
         synchronized (lock) {
             lastFailure = null;
             while (true) {
                 long now = System.nanoTime();
-                if (state != null && stateNanos >= sentNanos) {
+                if (state != null && (anyState || stateNanos >= sentNanos)) {
                     if (orderId != null && orderToFirstState < 0 && orderId.equals(state.orderId())) {
                         orderToFirstState = stateNanos - sentNanos;
                     }

@@ -102,6 +102,10 @@ public final class SimulatedAgv implements AutoCloseable {
     private final Set<String> seenOrders = new HashSet<>();
     private boolean driving;
     private boolean paused;
+    /** A new order's first node is where the AGV stands: reached at once, its actions run first. */
+    private boolean atOrderStart;
+    /** A faulty AGV (fault injection): drives onto its horizon as if it were released. */
+    private volatile boolean ignoresBase;
     private boolean cancelRequested;
     private String cancelActionId;
     private long lastStateNanos;
@@ -157,6 +161,15 @@ public final class SimulatedAgv implements AutoCloseable {
         link.onReconnect(this::announce);
         announce();
         thread.start();
+        return this;
+    }
+
+    /**
+     * Makes this AGV faulty: it drives its orders' horizon as if it were released, beyond where master control
+     * allowed it (a rogue AGV, for the traffic tests). Call before {@link #start()}.
+     */
+    public SimulatedAgv ignoringBase() {
+        ignoresBase = true;
         return this;
     }
 
@@ -237,6 +250,11 @@ public final class SimulatedAgv implements AutoCloseable {
             pendingEdges.clear();
             cancelRequested = false;
         }
+        if (update) {
+            // an update replaces the horizon; the base it stitches onto stays
+            pendingNodes.removeIf(n -> !n.released());
+            pendingEdges.removeIf(e -> !e.released());
+        }
         orderId = o.orderId();
         orderUpdateId = o.orderUpdateId();
         for (Node n : nodes) {
@@ -245,9 +263,11 @@ public final class SimulatedAgv implements AutoCloseable {
         for (Edge e : edges) {
             e.actions().forEach(a -> actionStates.put(a.actionId(), waiting(a)));
         }
-        // the first node is where the AGV stands: reached at once, its actions run first
-        if (pendingNodes.isEmpty()) {
+        // a new order's first node is where the AGV stands: reached at once, its actions run first;
+        // an update's first node is the decision point it stitches onto, already known
+        if (!update) {
             lastNodeSequenceId = nodes.get(0).sequenceId();
+            atOrderStart = true;
             pendingNodes.addAll(nodes);
         } else {
             pendingNodes.addAll(nodes.subList(1, nodes.size()));
@@ -290,10 +310,11 @@ public final class SimulatedAgv implements AutoCloseable {
                 }
             }
         }
-        if (update && !pendingNodes.isEmpty() && !nodes.get(0).actions().isEmpty()) {
+        if (update && !nodes.get(0).actions().isEmpty()) {
             return Optional.of("validationError: an update of a running order cannot add actions to its first node");
         }
-        String start = update && !pendingNodes.isEmpty() ? pendingNodes.get(pendingNodes.size() - 1).nodeId() : lastNodeId;
+        List<Node> base = pendingNodes.stream().filter(Node::released).toList();
+        String start = update && !base.isEmpty() ? base.get(base.size() - 1).nodeId() : lastNodeId;
         if (!nodes.get(0).nodeId().equals(start)) {
             return Optional.of("noRouteError: the order starts at " + nodes.get(0).nodeId() + " but the AGV is at " + start);
         }
@@ -302,11 +323,14 @@ public final class SimulatedAgv implements AutoCloseable {
 
     private void executeOrder() {
         String order = orderId;
-        // the first pending node has been reached: run its actions, then drive each edge and run its end node's actions
-        Node at = pendingNodes.remove(0);
-        if (!nodeActions(at)) {
-            abortOrder("node action failed");
-            return;
+        // a new order's first node has been reached: run its actions, then drive each released edge and run its end node's actions
+        if (atOrderStart) {
+            atOrderStart = false;
+            Node at = pendingNodes.remove(0);
+            if (!nodeActions(at)) {
+                abortOrder("node action failed");
+                return;
+            }
         }
         while (!pendingEdges.isEmpty()) {
             if (cancelRequested) {
@@ -315,6 +339,9 @@ public final class SimulatedAgv implements AutoCloseable {
                 return;
             }
             Edge e = pendingEdges.peekFirst();
+            if (!e.released() && !ignoresBase) {
+                return; // the decision point: stop here until master control extends the base
+            }
             Node end = pendingNodes.get(0);
             driving = true;
             paceWallNanos = System.nanoTime();

@@ -1,0 +1,185 @@
+package org.triad.examples.hospital.vda5050;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+import org.triad.building.traffic.Resource;
+import org.triad.building.traffic.Resource.Kind;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.vda5050.broker.MosquittoBroker;
+import org.triad.vda5050.master.MasterControl;
+import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
+import org.triad.vda5050.mqtt.ConformanceMonitor;
+import org.triad.vda5050.protocol.AgvState;
+
+/**
+ * Traffic control through a real Mosquitto and simulated couriers: orders with base and horizon, order
+ * updates as stretches are granted, a robot that waits for a corridor or a door instead of failing, and a
+ * rogue AGV driving beyond its base stopped as a safety error. Each courier drives in a hospital of its own
+ * (one building with many robots is issue #20's), all in the same coordinates: the test checks from the
+ * positions they report that two robots are never in the single-lane corridor at once.
+ */
+class TrafficVdaTest {
+    /** The west corridor of the ring (x 0..2.4 m, y 7.4..13 m): one robot at a time. */
+    private static boolean inWestCorridor(AgvState s) {
+        return s.agvPosition() != null && s.agvPosition().x() < 2.4 && s.agvPosition().y() > 7.4 && s.agvPosition().y() < 13;
+    }
+
+    private final List<String> log = new CopyOnWriteArrayList<>();
+    private final List<SimulatedAgv> agvs = new ArrayList<>();
+    private final ExecutorService pool = Executors.newFixedThreadPool(3);
+    private MosquittoBroker broker;
+    private ConformanceMonitor monitor;
+    private MasterControl master;
+
+    /**
+     * The hospital's ring as traffic control sees it: corridor waypoints wide enough for {@code junction}
+     * robots, the west and east corridors for one, the fire door and every room door for one.
+     */
+    static TrafficMap hospital(int junction) {
+        TrafficMap.Builder b = TrafficMap.builder();
+        for (String c : List.of("c1", "c2", "c3", "c4", "c5", "c6")) {
+            b.node(c, junction);
+        }
+        b.node("lobby", 3);
+        for (String r : List.of("storage", "xray", "ward1", "ward2", "ward3")) {
+            b.node(r, 1);
+        }
+        b.edge("c1", "c2").edge("c2", "c3").edge("c4", "c5").edge("c5", "c6").edge("c1", "c4").edge("c3", "c6");
+        b.area(Kind.CORRIDOR, "west", 1, "c1-c4").area(Kind.CORRIDOR, "east", 1, "c3-c6").area(Kind.DOOR, "fireDoor", 1, "c2-c3");
+        String[][] rooms = { { "storage", "c1" }, { "xray", "c2" }, { "ward1", "c3" }, { "lobby", "c4" }, { "ward3", "c5" }, { "ward2", "c6" } };
+        for (String[] r : rooms) {
+            b.edge(r[0], r[1]).area(Kind.DOOR, r[0] + "Door", 1, r[0] + "-" + r[1]);
+        }
+        return b.build();
+    }
+
+    @BeforeEach
+    void start() {
+        Path dir = Path.of("target", "vda5050", "traffic");
+        broker = MosquittoBroker.start(dir.resolve("broker"));
+        monitor = ConformanceMonitor.on(broker.url());
+        master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, log::add);
+    }
+
+    @AfterEach
+    void stop() {
+        agvs.forEach(SimulatedAgv::close);
+        pool.shutdownNow();
+        master.close();
+        List<String> violations = monitor.violations();
+        monitor.close();
+        broker.close();
+        assertEquals(List.of(), violations, "every message conforms to the VDA 5050 schemas");
+    }
+
+    private RemoteAgv agv(String serial, boolean rogue) {
+        SimulatedAgv a = new SimulatedAgv(broker.url(), serial, 1, 20, null, log::add);
+        agvs.add(rogue ? a.ignoringBase().start() : a.start());
+        return master.agv(serial);
+    }
+
+    @Test
+    void headToHeadOnTheSingleLaneCorridorBothArriveOneAfterTheOther() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(2), 60, log::add);
+        RemoteAgv r1 = agv("courier-1", false);
+        RemoteAgv r2 = agv("courier-2", false);
+        assertTrue(r1.driveRoute(List.of("lobby", "c4", "c1"), traffic), r1.lastFailure() + "\n" + log);
+
+        AtomicBoolean both = new AtomicBoolean();
+        AtomicBoolean sampling = new AtomicBoolean(true);
+        Future<?> sampler = pool.submit(() -> {
+            while (sampling.get()) {
+                AgvState s1 = r1.state().orElseThrow();
+                AgvState s2 = r2.state().orElseThrow();
+                if (inWestCorridor(s1) && inWestCorridor(s2)) {
+                    both.set(true);
+                }
+                Thread.sleep(10);
+            }
+            return null;
+        });
+        Future<Boolean> south = pool.submit(() -> r1.driveRoute(List.of("c1", "c4", "c5"), traffic));
+        Future<Boolean> north = pool.submit(() -> r2.driveRoute(List.of("lobby", "c4", "c1", "c2"), traffic));
+        assertTrue(south.get(120, TimeUnit.SECONDS), r1.lastFailure() + "\n" + log);
+        assertTrue(north.get(120, TimeUnit.SECONDS), r2.lastFailure() + "\n" + log);
+        sampling.set(false);
+        sampler.get(10, TimeUnit.SECONDS);
+        assertEquals("c5", r1.state().orElseThrow().lastNodeId());
+        assertEquals("c2", r2.state().orElseThrow().lastNodeId());
+        assertFalse(both.get(), "two robots were in the single-lane corridor at once");
+        assertEquals(1, traffic.read(t -> t.stats().waits(Kind.CORRIDOR).size()), "one of them waited for the corridor\n" + log);
+        assertTrue(log.stream().anyMatch(l -> l.contains("courier-") && l.contains("/1 ")), "the base was extended by an order update\n" + log);
+    }
+
+    @Test
+    void twoRobotsForOneDoorOnePassesTheOtherWaitsAndPassesNext() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(2), 60, log::add);
+        RemoteAgv r1 = agv("courier-1", false);
+        RemoteAgv r2 = agv("courier-2", false);
+        Future<Boolean> first = pool.submit(() -> r1.driveRoute(List.of("lobby", "c4", "c5"), traffic));
+        Future<Boolean> second = pool.submit(() -> r2.driveRoute(List.of("lobby", "c4", "c1"), traffic));
+        assertTrue(first.get(120, TimeUnit.SECONDS), r1.lastFailure() + "\n" + log);
+        assertTrue(second.get(120, TimeUnit.SECONDS), r2.lastFailure() + "\n" + log);
+        assertEquals(1, traffic.read(t -> t.stats().waits(Kind.DOOR).size()), "one waited for the lobby's door\n" + log);
+        Resource door = traffic.read(t -> t.map().area("lobbyDoor").orElseThrow());
+        assertEquals(0, traffic.read(t -> t.holders(door).size()), "the door is free again");
+    }
+
+    @Test
+    void aRobotThatCannotGetItsCorridorWithinTheBoundFailsWithTheReason() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(1), 2, log::add);
+        RemoteAgv r1 = agv("courier-1", false);
+        RemoteAgv r2 = agv("courier-2", false);
+        assertTrue(r1.driveRoute(List.of("lobby", "c4"), traffic), r1.lastFailure() + "\n" + log);
+        // courier-1 stays at c4, a junction for one: courier-2 waits at the lobby, then gives up with the reason
+        assertFalse(r2.driveRoute(List.of("lobby", "c4", "c5"), traffic));
+        String why = r2.lastFailure().orElseThrow();
+        assertTrue(why.contains("courier-2 waits at lobby for") && why.contains("node 'c4'") && why.contains("triad/courier-1")
+                && why.contains("for more than 2.0 s"), why);
+        assertEquals("lobby", r2.state().orElseThrow().lastNodeId(), "it never left its decision point");
+        assertTrue(traffic.waits().isEmpty());
+    }
+
+    @Test
+    void aRogueAgvDrivingBeyondItsBaseIsReportedAsASafetyErrorAndStopped() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(1), 60, log::add);
+        RemoteAgv r1 = agv("courier-1", false);
+        RemoteAgv rogue = agv("courier-2", true);
+        assertTrue(r1.driveRoute(List.of("lobby", "c4"), traffic), r1.lastFailure() + "\n" + log);
+        // c4 is held by courier-1: courier-2's base is only the lobby, c4 its horizon; it drives there anyway
+        assertFalse(rogue.driveRoute(List.of("lobby", "c4", "c5"), traffic));
+        String why = rogue.lastFailure().orElseThrow();
+        assertTrue(why.contains("safety: AGV triad/courier-2 drove beyond its released base: it reports node 'c4' (sequence 2) but its base ends at 'lobby'"),
+                why);
+        assertTrue(waitFor(() -> Boolean.TRUE.equals(rogue.state().orElseThrow().paused())), "stopped with startPause\n" + log);
+        assertEquals(Double.POSITIVE_INFINITY, traffic.read(t -> t.expectedWait("c5", "c4")), "nobody is sent to where it stands");
+    }
+
+    private static boolean waitFor(java.util.function.BooleanSupplier c) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (System.nanoTime() < end) {
+            if (c.getAsBoolean()) {
+                return true;
+            }
+            Thread.sleep(20);
+        }
+        return false;
+    }
+}

@@ -1,0 +1,180 @@
+package org.triad.vda5050.master;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.function.Consumer;
+
+import org.triad.building.traffic.Decision;
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.Wait;
+import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Messages.AgvError;
+import org.triad.vda5050.protocol.Messages.Edge;
+import org.triad.vda5050.protocol.Messages.Node;
+
+/**
+ * One route driven under traffic control as one VDA 5050 order: the reserved part is the order's base, the
+ * rest its horizon; each stretch traffic control grants later extends the base with an order update (same
+ * orderId, next orderUpdateId, stitched at the old decision point); what the AGV reports passed is released
+ * behind it. The base is kept one stretch ahead of the robot: as it enters its last granted stretch, the
+ * next is asked for, so a robot with a free path never reaches a decision point without its continuation.
+ * Sequence ids: node {@code i} of the route is {@code 2i}, the edge after it {@code 2i+1}.
+ */
+final class RouteDrive {
+    /** What one state means for the call: still running, done, or failed with a reason. */
+    record Verdict(boolean done, String failure) {
+        static final Verdict RUNNING = new Verdict(false, null);
+        static final Verdict DONE = new Verdict(true, null);
+    }
+
+    /** Sends an order message (orderId, orderUpdateId, nodes, edges are what differs). */
+    interface OrderSender {
+        void send(String orderId, int orderUpdateId, List<Node> nodes, List<Edge> edges);
+    }
+
+    private final String robot;
+    private final List<String> route;
+    private final String orderId;
+    private final TrafficControl traffic;
+    private final OrderSender orders;
+    private final Consumer<String> stopNow;
+    private final List<Integer> stretchEnds = new ArrayList<>();
+    private int updateId = -1;
+    private int baseEnd;
+    private int passed;
+    private boolean waiting;
+
+    /**
+     * @param stopNow sends the AGV an instant action that stops it at once (its argument the reason)
+     */
+    RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow) {
+        this.robot = robot;
+        this.route = List.copyOf(route);
+        this.orderId = orderId;
+        this.traffic = traffic;
+        this.orders = orders;
+        this.stopNow = stopNow;
+    }
+
+    String orderId() {
+        return orderId;
+    }
+
+    /** Asks for the first stretches and sends the order (its base possibly just the start node); a reason when refused. */
+    Optional<String> start() {
+        Decision d = traffic.request(robot, route);
+        if (d instanceof Refused r) {
+            return Optional.of(r.reason());
+        }
+        if (d instanceof Granted g) {
+            baseEnd = g.stretch().size() - 1;
+            stretchEnds.add(baseEnd);
+        } else {
+            waiting = true;
+        }
+        send(0);
+        return waiting ? Optional.empty() : askAhead();
+    }
+
+    /** Called with each state of the AGV (and again every few milliseconds with the last one). */
+    Verdict onState(AgvState s) {
+        Optional<Decision> d = traffic.take(robot);
+        if (d.isPresent() && waiting) {
+            waiting = false;
+            if (d.get() instanceof Refused r) {
+                return endHere(r.reason());
+            }
+            extend((Granted) d.get());
+        }
+        Optional<Wait> late = traffic.overdue(robot);
+        if (late.isPresent()) {
+            waiting = false;
+            return endHere(String.format(Locale.ROOT, "%s for more than %.1f s (the wait bound)", late.get().reason(), traffic.waitBoundSeconds()));
+        }
+        if (!orderId.equals(s.orderId())) {
+            return Verdict.RUNNING;
+        }
+        for (AgvError e : s.errors()) {
+            if (orderId.equals(e.reference("orderId"))) {
+                return new Verdict(false, e.describe());
+            }
+        }
+        int at = s.lastNodeSequenceId() / 2;
+        if (s.lastNodeSequenceId() % 2 == 0 && at < route.size() && route.get(at).equals(s.lastNodeId()) && at > passed) {
+            if (at > baseEnd) {
+                String why = String.format(Locale.ROOT, "safety: AGV %s drove beyond its released base: it reports node '%s' (sequence %d) but its base ends at '%s' (sequence %d); stopped",
+                        robot, s.lastNodeId(), s.lastNodeSequenceId(), route.get(baseEnd), 2 * baseEnd);
+                stopNow.accept(why);
+                traffic.rogue(robot, s.lastNodeId(), why);
+                return new Verdict(false, why);
+            }
+            for (int i = passed + 1; i <= at; i++) {
+                traffic.passed(robot, route.get(i));
+            }
+            passed = at;
+            Optional<String> refused = askAhead();
+            if (refused.isPresent()) {
+                return endHere(refused.get());
+            }
+        }
+        if (passed == route.size() - 1 && s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving()) {
+            return Verdict.DONE;
+        }
+        return Verdict.RUNNING;
+    }
+
+    /** The call failed for another reason (the AGV's error, silence, a broken connection): its reservations end where it is. */
+    void abandon() {
+        traffic.stopAt(robot, route.get(passed));
+    }
+
+    /** Asks for further stretches while the robot is in its last granted one; a reason when refused. */
+    private Optional<String> askAhead() {
+        while (!waiting && baseEnd < route.size() - 1 && stretchEnds.stream().filter(e -> e > passed).count() <= 1) {
+            Decision d = traffic.request(robot, route.subList(baseEnd, route.size()));
+            if (d instanceof Refused r) {
+                return Optional.of(r.reason());
+            }
+            if (d instanceof Granted g) {
+                extend(g);
+            } else {
+                waiting = true;
+            }
+        }
+        return Optional.empty();
+    }
+
+    private void extend(Granted g) {
+        int from = baseEnd;
+        baseEnd += g.stretch().size() - 1;
+        stretchEnds.add(baseEnd);
+        send(from);
+    }
+
+    /** Ends the order at the robot's decision point (the horizon deleted) and fails the call with the reason. */
+    private Verdict endHere(String why) {
+        orders.send(orderId, ++updateId, List.of(node(baseEnd)), List.of());
+        traffic.stopAt(robot, route.get(baseEnd));
+        return new Verdict(false, why);
+    }
+
+    /** The order (update) from route node {@code from} on: released up to the decision point, horizon after. */
+    private void send(int from) {
+        List<Node> nodes = new ArrayList<>();
+        List<Edge> edges = new ArrayList<>();
+        for (int i = from; i < route.size(); i++) {
+            nodes.add(node(i));
+            if (i + 1 < route.size()) {
+                edges.add(new Edge(route.get(i) + "-" + route.get(i + 1), 2 * i + 1, null, i + 1 <= baseEnd, route.get(i), route.get(i + 1), List.of()));
+            }
+        }
+        orders.send(orderId, ++updateId, nodes, edges);
+    }
+
+    private Node node(int i) {
+        return new Node(route.get(i), 2 * i, null, i <= baseEnd, null, List.of());
+    }
+}

@@ -1,0 +1,154 @@
+package org.triad.vda5050.master;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.function.Consumer;
+import java.util.function.Function;
+
+import org.triad.building.traffic.Decision;
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.ReservationTable;
+import org.triad.building.traffic.ReservationTable.Changes;
+import org.triad.building.traffic.Resource;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.building.traffic.Wait;
+
+/**
+ * Traffic control for the AGVs of one master: the building's {@link ReservationTable}, shared by every
+ * {@link RemoteAgv#driveRoute} call, thread-safe, on the wall clock. Decisions the table makes for one robot
+ * while another drives (a request granted because a corridor came free, refused because a robot was lost
+ * there) wait in that robot's mailbox until its own call picks them up.
+ *
+ * @see RemoteAgv#driveRoute(List, TrafficControl)
+ */
+public final class TrafficControl {
+    private final ReservationTable table;
+    private final double waitBoundSeconds;
+    private final Consumer<String> log;
+    private final Map<String, Decision> mailbox = new HashMap<>();
+    private final long origin = System.nanoTime();
+
+    /**
+     * @param waitBoundSeconds how long a robot may wait for a resource before its action fails with the reason
+     * @param log              where one-line reports go (waits over the bound, rogue AGVs, lost robots)
+     */
+    public TrafficControl(TrafficMap map, double waitBoundSeconds, Consumer<String> log) {
+        if (!(waitBoundSeconds > 0) || Double.isInfinite(waitBoundSeconds)) {
+            throw new IllegalArgumentException("the wait bound is a positive number of seconds, not " + waitBoundSeconds);
+        }
+        this.table = new ReservationTable(map, () -> (System.nanoTime() - origin) / 1e9);
+        this.waitBoundSeconds = waitBoundSeconds;
+        this.log = Objects.requireNonNull(log, "log");
+    }
+
+    public double waitBoundSeconds() {
+        return waitBoundSeconds;
+    }
+
+    /** Reads the table under the lock (an operator page, a test, a benchmark). */
+    public synchronized <T> T read(Function<ReservationTable, T> query) {
+        return query.apply(table);
+    }
+
+    /** Every robot waiting for a resource, with its reason and since when: what the operator page shows. */
+    public synchronized List<Wait> waits() {
+        return table.waits();
+    }
+
+    /** Puts the robot on the map where it stands, unless it is there already; false when its node has no room. */
+    synchronized boolean place(String robot, String node) {
+        if (table.robots().contains(robot)) {
+            return true;
+        }
+        try {
+            table.place(robot, node);
+            return true;
+        } catch (IllegalStateException full) {
+            log.accept("traffic: " + full.getMessage());
+            return false;
+        }
+    }
+
+    synchronized String decisionPoint(String robot) {
+        return table.decisionPoint(robot);
+    }
+
+    synchronized Decision request(String robot, List<String> route) {
+        mailbox.remove(robot);
+        return table.request(robot, route);
+    }
+
+    synchronized boolean released(String robot, String node) {
+        return table.released(robot, node);
+    }
+
+    synchronized void passed(String robot, String node) {
+        deliver(table.passed(robot, node));
+    }
+
+    /** The decision the table made for this robot since it last asked, if any. */
+    synchronized Optional<Decision> take(String robot) {
+        return Optional.ofNullable(mailbox.remove(robot));
+    }
+
+    /** The robot's wait, once it is longer than the bound: withdrawn, and returned with its reason. */
+    synchronized Optional<Wait> overdue(String robot) {
+        Optional<Wait> w = table.waiting(robot).filter(x -> table.overdue(waitBoundSeconds).contains(x));
+        if (w.isPresent()) {
+            deliver(table.cancel(robot));
+        }
+        return w;
+    }
+
+    /** The robot stops at {@code node} of its base (its order ended there): the rest is freed, its wait withdrawn. */
+    synchronized void stopAt(String robot, String node) {
+        if (table.robots().contains(robot) && table.released(robot, node)) {
+            deliver(table.truncate(robot, node));
+        }
+    }
+
+    /** The robot is down where it is (its last will, a rogue stopped): nobody is sent into its place. */
+    synchronized void lost(String robot, String why) {
+        if (table.robots().contains(robot)) {
+            log.accept("traffic: " + robot + " lost: " + why);
+            deliver(table.lost(robot, why));
+        }
+    }
+
+    /** A rogue AGV stopped at {@code node}, off its base: lost where it was, and that node blocked until it is taken away. */
+    synchronized void rogue(String robot, String node, String why) {
+        lost(robot, why);
+        if (table.map().hasNode(node)) {
+            for (Resource r : table.map().standing(node)) {
+                deliver(table.block(r, "robot " + robot + " stands there off its base (" + why + ")"));
+            }
+        }
+    }
+
+    /** The robot leaves the map (taken away): everything it held is freed, blocks it caused lifted. */
+    public synchronized void remove(String robot) {
+        if (table.robots().contains(robot)) {
+            deliver(table.remove(robot));
+        }
+    }
+
+    /** Lifts a block on the resources of this node (a rogue AGV taken away from it). */
+    public synchronized void clear(String node) {
+        for (Resource r : table.map().standing(node)) {
+            deliver(table.unblock(r));
+        }
+    }
+
+    private void deliver(Changes c) {
+        for (Granted g : c.granted()) {
+            mailbox.put(g.robot(), g);
+        }
+        for (Refused r : c.refused()) {
+            mailbox.put(r.robot(), r);
+        }
+    }
+}
