@@ -285,6 +285,11 @@ public final class ReservationTable {
         return regrant();
     }
 
+    /** Whether the robot is lost ({@link #lost}) and not yet removed. */
+    public boolean isLost(String robot) {
+        return robot(robot).lost != null;
+    }
+
     /** The robots holding this resource (a lost robot too). */
     public Set<String> holders(Resource r) {
         return holders.getOrDefault(r, Set.of());

@@ -231,7 +231,14 @@ public final class RemoteAgv implements FailureExplaining {
             return v.done() ? Outcome.DONE : v.failure() != null ? Outcome.failed(v.failure()) : Outcome.PENDING;
         }, drive.orderId(), true);
         if (!ok) {
-            drive.abandon();
+            boolean down;
+            synchronized (lock) {
+                down = connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE;
+            }
+            drive.abandon(down);
+            synchronized (lock) {
+                abandonedOrder = drive.orderId(); // it may still drive to its decision point: the next order waits for that
+            }
         }
         return ok;
     }

@@ -81,6 +81,9 @@ final class RouteDrive {
 
     /** Called with each state of the AGV (and again every few milliseconds with the last one). */
     Verdict onState(AgvState s) {
+        if (traffic.isLost(robot)) {
+            return new Verdict(false, "traffic control lost AGV " + robot);
+        }
         Optional<Decision> d = traffic.take(robot);
         if (d.isPresent() && waiting) {
             waiting = false;
@@ -126,9 +129,16 @@ final class RouteDrive {
         return Verdict.RUNNING;
     }
 
-    /** The call failed for another reason (the AGV's error, silence, a broken connection): its reservations end where it is. */
-    void abandon() {
-        traffic.stopAt(robot, route.get(passed));
+    /**
+     * The call failed for another reason: after the AGV's error or silence its reservations end where it last
+     * reported a node; after its last will (not back within the grace) it is lost there, its base ahead freed.
+     */
+    void abandon(boolean connectionLost) {
+        if (connectionLost) {
+            traffic.lost(robot, "CONNECTIONBROKEN (its last will) and not back within the reconnect grace");
+        } else {
+            traffic.stopAt(robot, route.get(passed));
+        }
     }
 
     /** Asks for further stretches while the robot is in its last granted one; a reason when refused. */

@@ -61,6 +61,10 @@ public final class TrafficControl {
 
     /** Puts the robot on the map where it stands, unless it is there already; false when its node has no room. */
     synchronized boolean place(String robot, String node) {
+        if (table.robots().contains(robot) && table.isLost(robot)) {
+            log.accept("traffic: " + robot + " is back, at " + node + "; the place it was lost at is free again");
+            deliver(table.remove(robot));
+        }
         if (table.robots().contains(robot)) {
             return true;
         }
@@ -71,6 +75,10 @@ public final class TrafficControl {
             log.accept("traffic: " + full.getMessage());
             return false;
         }
+    }
+
+    synchronized boolean isLost(String robot) {
+        return table.robots().contains(robot) && table.isLost(robot);
     }
 
     synchronized String decisionPoint(String robot) {

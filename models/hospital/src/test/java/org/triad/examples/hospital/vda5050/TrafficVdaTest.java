@@ -124,7 +124,7 @@ class TrafficVdaTest {
         assertEquals("c5", r1.state().orElseThrow().lastNodeId());
         assertEquals("c2", r2.state().orElseThrow().lastNodeId());
         assertFalse(both.get(), "two robots were in the single-lane corridor at once");
-        assertEquals(1, traffic.read(t -> t.stats().waits(Kind.CORRIDOR).size()), "one of them waited for the corridor\n" + log);
+        assertEquals(1, (int) traffic.read(t -> t.stats().waits(Kind.CORRIDOR).size()), "one of them waited for the corridor\n" + log);
         assertTrue(log.stream().anyMatch(l -> l.contains("courier-") && l.contains("/1 ")), "the base was extended by an order update\n" + log);
     }
 
@@ -137,9 +137,9 @@ class TrafficVdaTest {
         Future<Boolean> second = pool.submit(() -> r2.driveRoute(List.of("lobby", "c4", "c1"), traffic));
         assertTrue(first.get(120, TimeUnit.SECONDS), r1.lastFailure() + "\n" + log);
         assertTrue(second.get(120, TimeUnit.SECONDS), r2.lastFailure() + "\n" + log);
-        assertEquals(1, traffic.read(t -> t.stats().waits(Kind.DOOR).size()), "one waited for the lobby's door\n" + log);
+        assertEquals(1, (int) traffic.read(t -> t.stats().waits(Kind.DOOR).size()), "one waited for the lobby's door\n" + log);
         Resource door = traffic.read(t -> t.map().area("lobbyDoor").orElseThrow());
-        assertEquals(0, traffic.read(t -> t.holders(door).size()), "the door is free again");
+        assertEquals(0, (int) traffic.read(t -> t.holders(door).size()), "the door is free again");
     }
 
     @Test
@@ -170,6 +170,25 @@ class TrafficVdaTest {
                 why);
         assertTrue(waitFor(() -> Boolean.TRUE.equals(rogue.state().orElseThrow().paused())), "stopped with startPause\n" + log);
         assertEquals(Double.POSITIVE_INFINITY, traffic.read(t -> t.expectedWait("c5", "c4")), "nobody is sent to where it stands");
+    }
+
+    @Test
+    void aRobotKilledInTheCorridorIsLostThereAfterItsLastWillAndTheOthersGoOnElsewhere() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(2), 60, log::add);
+        RemoteAgv r2 = agv("courier-2", false);
+        try (AgvProcess dying = AgvProcess.start(broker.url(), "courier-1", 5, Path.of("target", "vda5050", "traffic"))) {
+            RemoteAgv r1 = master.agv("courier-1");
+            Future<Boolean> west = pool.submit(() -> r1.driveRoute(List.of("lobby", "c4", "c1"), traffic));
+            assertTrue(waitFor(() -> r1.state().map(s -> "c4".equals(s.lastNodeId()) && s.driving()).orElse(false)), "in the corridor\n" + log);
+            dying.kill();
+            assertFalse(west.get(60, TimeUnit.SECONDS));
+            assertTrue(r1.lastFailure().orElseThrow().contains("CONNECTIONBROKEN"), r1.lastFailure().orElseThrow());
+        }
+        assertTrue(r2.driveRoute(List.of("lobby", "c4"), traffic), r2.lastFailure() + "\n" + log);
+        assertFalse(r2.driveRoute(List.of("c4", "c1", "c2"), traffic), "not driven into the lost robot");
+        assertTrue(r2.lastFailure().orElseThrow().contains("corridor 'west' is blocked by robot triad/courier-1, lost there (CONNECTIONBROKEN"),
+                r2.lastFailure().orElseThrow());
+        assertTrue(r2.driveRoute(List.of("c4", "c5", "c6"), traffic), "the others go on elsewhere: " + r2.lastFailure() + "\n" + log);
     }
 
     private static boolean waitFor(java.util.function.BooleanSupplier c) throws InterruptedException {
