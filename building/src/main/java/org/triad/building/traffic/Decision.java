@@ -29,7 +29,17 @@ public sealed interface Decision permits Decision.Granted, Decision.Waiting, Dec
     /**
      * The robot may not wait for this stretch: waiting would close a wait-for cycle (a deadlock), or the
      * stretch is blocked (a lost robot, an obstacle). The action fails with {@code reason}, and RefArc re-plans.
+     * {@code cycle} names the robots the wait would have closed a cycle with (the robot first), empty for a block:
+     * when the robot cannot get out of the way, one of the others can (a dispatcher's choice).
      */
-    record Refused(String robot, String reason) implements Decision {
+    record Refused(String robot, String reason, List<String> cycle) implements Decision {
+        public Refused {
+            cycle = List.copyOf(cycle);
+        }
+
+        /** Refused for a blocked place: no cycle. */
+        public Refused(String robot, String reason) {
+            this(robot, reason, List.of());
+        }
     }
 }

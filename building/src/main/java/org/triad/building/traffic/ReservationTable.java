@@ -177,7 +177,7 @@ public final class ReservationTable {
         }
         List<String> cycle = cycleThrough(q);
         if (!cycle.isEmpty()) {
-            return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0));
+            return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0), cycle);
         }
         q = q.blockedBy(new LinkedHashSet<>(waitOf(q).blocking()));
         queue.put(q.arrival, q);
@@ -450,8 +450,11 @@ public final class ReservationTable {
         return b.toString();
     }
 
+    /** The first blocked resource the request needs, areas first (the corridor says more than its lane). */
     private Optional<String> blockedReason(Request q) {
-        for (Resource r : q.needed) {
+        List<Resource> areasFirst = new ArrayList<>(q.needed);
+        areasFirst.sort(java.util.Comparator.comparing((Resource r) -> !r.kind().isArea()));
+        for (Resource r : areasFirst) {
             if (blocked.containsKey(r)) {
                 return Optional.of(r + " is blocked: " + blocked.get(r));
             }

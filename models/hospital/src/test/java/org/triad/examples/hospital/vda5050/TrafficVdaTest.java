@@ -168,7 +168,7 @@ class TrafficVdaTest {
         String why = rogue.lastFailure().orElseThrow();
         assertTrue(why.contains("safety: AGV triad/courier-2 drove beyond its released base: it reports node 'c4' (sequence 2) but its base ends at 'lobby'"),
                 why);
-        assertTrue(waitFor(() -> Boolean.TRUE.equals(rogue.state().orElseThrow().paused())), "stopped with startPause\n" + log);
+        assertTrue(waitFor(() -> Boolean.TRUE.equals(rogue.state().orElseThrow().paused()), 20), "stopped with startPause\n" + log);
         assertEquals(Double.POSITIVE_INFINITY, traffic.read(t -> t.expectedWait("c5", "c4")), "nobody is sent to where it stands");
     }
 
@@ -178,8 +178,10 @@ class TrafficVdaTest {
         RemoteAgv r2 = agv("courier-2", false);
         try (AgvProcess dying = AgvProcess.start(broker.url(), "courier-1", 5, Path.of("target", "vda5050", "traffic"))) {
             RemoteAgv r1 = master.agv("courier-1");
+            assertTrue(waitFor(() -> r1.state().isPresent(), 120), "its own JVM came up\n" + dying.output());
             Future<Boolean> west = pool.submit(() -> r1.driveRoute(List.of("lobby", "c4", "c1"), traffic));
-            assertTrue(waitFor(() -> r1.state().map(s -> "c4".equals(s.lastNodeId()) && s.driving()).orElse(false)), "in the corridor\n" + log);
+            assertTrue(waitFor(() -> r1.state().map(s -> "c4".equals(s.lastNodeId()) && s.driving()).orElse(false), 60),
+                    "in the corridor: " + r1.lastFailure() + "\n" + log + "\n" + dying.output());
             dying.kill();
             assertFalse(west.get(60, TimeUnit.SECONDS));
             assertTrue(r1.lastFailure().orElseThrow().contains("CONNECTIONBROKEN"), r1.lastFailure().orElseThrow());
@@ -191,8 +193,8 @@ class TrafficVdaTest {
         assertTrue(r2.driveRoute(List.of("c4", "c5", "c6"), traffic), "the others go on elsewhere: " + r2.lastFailure() + "\n" + log);
     }
 
-    private static boolean waitFor(java.util.function.BooleanSupplier c) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+    private static boolean waitFor(java.util.function.BooleanSupplier c, int seconds) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         while (System.nanoTime() < end) {
             if (c.getAsBoolean()) {
                 return true;
