@@ -36,7 +36,7 @@ public final class TrafficBenchmark {
     private static final double SPEED = 1.0;
     private static final double RIDE = 30;
     private static final double DWELL = 10;
-    private static final double WAIT_BOUND = 300;
+    private static final double WAIT_BOUND = 60;
     private static final double RECOVERY = 30;
 
     private final TrafficMap map;
