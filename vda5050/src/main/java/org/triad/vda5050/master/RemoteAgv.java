@@ -227,7 +227,13 @@ public final class RemoteAgv implements FailureExplaining {
             }
         }
         boolean ok = awaitOutcome(call, sent, s -> {
-            RouteDrive.Verdict v = drive.onState(s);
+            RouteDrive.Verdict v;
+            try {
+                v = drive.onState(s);
+            } catch (IllegalStateException | IllegalArgumentException inconsistent) {
+                // the AGV reports what the table cannot place (e.g. a node off the route): a failure with its reason, not a crash
+                v = new RouteDrive.Verdict(false, "traffic control: " + inconsistent.getMessage());
+            }
             return v.done() ? Outcome.DONE : v.failure() != null ? Outcome.failed(v.failure()) : Outcome.PENDING;
         }, drive.orderId(), true);
         if (!ok) {
