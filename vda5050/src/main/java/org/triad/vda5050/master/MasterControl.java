@@ -66,7 +66,7 @@ public final class MasterControl implements AutoCloseable {
     /** The AGV with this manufacturer and serial number; the same object for the same AGV. */
     public RemoteAgv agv(String manufacturer, String serialNumber) {
         Topic.ORDER.of(manufacturer, serialNumber); // rejects names unusable in topics
-        return agvs.computeIfAbsent(manufacturer + "/" + serialNumber, k -> new RemoteAgv(link, manufacturer, serialNumber, timeouts));
+        return agvs.computeIfAbsent(manufacturer + "/" + serialNumber, k -> new RemoteAgv(link, manufacturer, serialNumber, timeouts, log));
     }
 
     public String broker() {

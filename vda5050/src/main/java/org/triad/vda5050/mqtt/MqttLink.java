@@ -240,6 +240,7 @@ public final class MqttLink implements AutoCloseable {
                 throw new VdaMessageException("speaks VDA 5050 " + version.asText() + "; Triad speaks " + Header.VERSION);
             }
             MessageSchemas.get().check(a.topic(), json);
+            checkSender(a, json);
             Received r = new Received(mqttTopic, a, json);
             for (Map.Entry<String, Consumer<Received>> h : handlers.entrySet()) {
                 if (matches(h.getKey(), mqttTopic)) {
@@ -251,6 +252,20 @@ public final class MqttLink implements AutoCloseable {
             problems.accept("vda5050: ignored message on " + mqttTopic + ": " + e.getMessage());
         } catch (RuntimeException e) {
             problems.accept("vda5050: handling a message on " + mqttTopic + " failed: " + e);
+        }
+    }
+
+    /**
+     * A message names its AGV twice, in the topic (what the broker's access control checked) and in its
+     * header; one naming another AGV than its topic is refused (an order naming another serial number was
+     * executed, a state could speak for another AGV).
+     */
+    private static void checkSender(Topic.Address a, JsonNode json) {
+        for (String[] field : new String[][] { { "manufacturer", a.manufacturer() }, { "serialNumber", a.serialNumber() } }) {
+            JsonNode v = json.get(field[0]);
+            if (v != null && v.isTextual() && !v.asText().equals(field[1])) {
+                throw new VdaMessageException("its " + field[0] + " '" + v.asText() + "' is not the topic's '" + field[1] + "'");
+            }
         }
     }
 
