@@ -22,7 +22,6 @@ import org.eclipse.paho.client.mqttv3.MqttConnectOptions;
 import org.eclipse.paho.client.mqttv3.MqttException;
 import org.eclipse.paho.client.mqttv3.MqttMessage;
 import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
-import org.triad.vda5050.protocol.Header;
 import org.triad.vda5050.protocol.MessageSchemas;
 import org.triad.vda5050.protocol.Topic;
 import org.triad.vda5050.protocol.VdaJson;
@@ -229,19 +228,7 @@ public final class MqttLink implements AutoCloseable {
     private void deliver(String mqttTopic, byte[] payload) {
         received.incrementAndGet();
         try {
-            Topic.Address a = Topic.parse(mqttTopic)
-                    .orElseThrow(() -> new VdaMessageException("not a VDA 5050 topic"));
-            if (!a.major().equals(Header.MAJOR)) {
-                throw new VdaMessageException("major version " + a.major() + " in the topic; Triad speaks " + Header.VERSION);
-            }
-            JsonNode json = VdaJson.parse(payload);
-            JsonNode version = json.get("version");
-            if (version != null && version.isTextual() && Header.majorOf(version.asText()) != Header.majorOf(Header.VERSION)) {
-                throw new VdaMessageException("speaks VDA 5050 " + version.asText() + "; Triad speaks " + Header.VERSION);
-            }
-            MessageSchemas.get().check(a.topic(), json);
-            checkSender(a, json);
-            Received r = new Received(mqttTopic, a, json);
+            Received r = Inbound.read(mqttTopic, payload);
             for (Map.Entry<String, Consumer<Received>> h : handlers.entrySet()) {
                 if (matches(h.getKey(), mqttTopic)) {
                     h.getValue().accept(r);
@@ -252,20 +239,6 @@ public final class MqttLink implements AutoCloseable {
             problems.accept("vda5050: ignored message on " + mqttTopic + ": " + e.getMessage());
         } catch (RuntimeException e) {
             problems.accept("vda5050: handling a message on " + mqttTopic + " failed: " + e);
-        }
-    }
-
-    /**
-     * A message names its AGV twice, in the topic (what the broker's access control checked) and in its
-     * header; one naming another AGV than its topic is refused (an order naming another serial number was
-     * executed, a state could speak for another AGV).
-     */
-    private static void checkSender(Topic.Address a, JsonNode json) {
-        for (String[] field : new String[][] { { "manufacturer", a.manufacturer() }, { "serialNumber", a.serialNumber() } }) {
-            JsonNode v = json.get(field[0]);
-            if (v != null && v.isTextual() && !v.asText().equals(field[1])) {
-                throw new VdaMessageException("its " + field[0] + " '" + v.asText() + "' is not the topic's '" + field[1] + "'");
-            }
         }
     }
 
