@@ -84,8 +84,12 @@ public final class ServeCommand implements Callable<Integer> {
 					host, port, environment()));
 		} catch (ServiceError | java.io.UncheckedIOException e) {
 			err.println("triad serve: " + e.getMessage());
-			err.println("  access, whatever this start left: ./triad users " + dir + (db != null ? " --db " + db : "")
-					+ " add NAME --role staff|operator|admin (a named user's token), or list");
+			Path file = db != null ? db : dir.resolve(TriadService.DEFAULT_DB);
+			if (Files.exists(file) || Files.exists(file.resolveSibling(file.getFileName() + ".mv.db"))) {
+				// the database was made (tokens included) before the start failed: how to get in, whatever it holds
+				err.println("  access, whatever this start left: ./triad users " + dir + (db != null ? " --db " + db : "")
+						+ " add NAME --role staff|operator|admin (a named user's token), or list");
+			}
 			return 2;
 		}
 		CountDownLatch stopped = new CountDownLatch(1);

@@ -43,9 +43,9 @@ class HttpApiFuzzTest {
 
 	/** Started on first use, stopped when the JVM ends. */
 	private static final class Running {
+		static final HttpClient HTTP = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10)).build();
 		static final TriadService SERVICE = start();
 		static final List<String[]> OPERATIONS = operations();
-		static final HttpClient HTTP = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10)).build();
 
 		private static TriadService start() {
 			try {

@@ -76,6 +76,7 @@ public final class TriadService implements AutoCloseable {
      * @throws ServiceError a start-up error (bad models, robots, database, port) with a one-line message
      */
     public static TriadService start(Options o) {
+        HttpsSettings https = HttpsSettings.from(o.env()); // a certificate that cannot be used stops the start before anything else
         ApplicationModels models = ApplicationModels.load(o.models());
         Path dbFile = o.db() != null ? o.db() : o.models().resolve(DEFAULT_DB);
         TaskStore store = TaskStore.open(dbFile);
@@ -87,7 +88,6 @@ public final class TriadService implements AutoCloseable {
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
-            HttpsSettings https = HttpsSettings.from(o.env());
             HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https);
             int port;
             try {

@@ -27,6 +27,14 @@ import org.junit.jupiter.api.io.TempDir;
 /** Given a certificate, the service speaks HTTPS only; a key store it cannot use stops the start with one line. */
 class HttpsTest {
     private static final String PASSWORD = "keystore-password";
+    @TempDir
+    static Path shared;
+    private static Path ks;
+
+    @org.junit.jupiter.api.BeforeAll
+    static void makeKeyStore() throws Exception {
+        ks = keyStore(shared);
+    }
 
     /** A self-signed certificate for localhost and 127.0.0.1, made by the JDK's keytool. */
     private static Path keyStore(Path dir) throws Exception {
@@ -47,7 +55,6 @@ class HttpsTest {
 
     @Test
     void givenACertificateTheServiceSpeaksHttpsOnly(@TempDir Path dir) throws Exception {
-        Path ks = keyStore(dir);
         try (TriadService s = TriadService.start(options(dir, Map.of(HttpsSettings.KEYSTORE_ENV, ks.toString(), HttpsSettings.PASSWORD_ENV, PASSWORD)))) {
             assertTrue(s.url().startsWith("https://127.0.0.1:"), s.url());
             KeyStore trust = KeyStore.getInstance("PKCS12");
@@ -78,8 +85,7 @@ class HttpsTest {
     }
 
     @Test
-    void aKeyStoreThatCannotBeUsedIsOneLine(@TempDir Path dir) throws Exception {
-        Path ks = keyStore(dir);
+    void aKeyStoreThatCannotBeUsedIsOneLine(@TempDir Path dir) {
         ServiceError e = assertThrows(ServiceError.class,
                 () -> TriadService.start(options(dir, Map.of(HttpsSettings.KEYSTORE_ENV, ks.toString(), HttpsSettings.PASSWORD_ENV, "wrong"))));
         assertTrue(e.getMessage().startsWith("HTTPS key store " + ks + " cannot be used (PKCS#12 with TRIAD_HTTPS_PASSWORD as its password)"),
