@@ -9,6 +9,8 @@ val triadVersion: String by project
 dependencies {
     testImplementation("org.triad:triad-dsl:$triadVersion")
     testImplementation("org.triad:triad-planner:$triadVersion")
+    testImplementation("org.triad:triad-vda5050:$triadVersion")
+    testImplementation("org.triad:triad-service:$triadVersion")
     testImplementation("com.code-intelligence:jazzer-junit:0.30.0")
 }
 

@@ -12,6 +12,7 @@ dependencies {
     api("org.triad:triad-runtime:$triadVersion")
     api("io.javalin:javalin:6.3.0")
     api("com.fasterxml.jackson.core:jackson-databind:2.17.2")
+    implementation("at.favre.lib:bcrypt:0.10.2") // users' secrets
     implementation("com.h2database:h2:2.2.224")
     implementation("org.flywaydb:flyway-core:10.17.3")
     implementation("org.slf4j:slf4j-simple:2.0.16") // Javalin, Jetty and Flyway log through SLF4J: warnings and errors to stderr

@@ -13,6 +13,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
 
+import org.triad.vda5050.security.ClientCredentials;
+
 /**
  * Runs code an application provides (its demo, its robot, its simulated fleet) without the command
  * line depending on the application: an application project names its mains in
@@ -95,6 +97,11 @@ final class ApplicationLauncher {
 		String opts = System.getenv("TRIAD_JAVA_OPTS");
 		if (opts != null && !opts.isBlank()) {
 			cmd.addAll(List.of(opts.trim().split("\\s+")));
+		}
+		// the broker credentials of --credentials reach the application's MQTT connections
+		String credentials = System.getProperty(ClientCredentials.PROPERTY);
+		if (credentials != null) {
+			cmd.add("-D" + ClientCredentials.PROPERTY + "=" + credentials);
 		}
 		cmd.add("-cp");
 		try {

@@ -14,11 +14,14 @@ import picocli.CommandLine.Option;
 @Command(name = "robot", mixinStandardHelpOptions = true,
 		description = { "Run simulated couriers of the dyn4j hospital as VDA 5050 2.1 robots (AGVs) on an MQTT broker, until stopped (Ctrl-C).",
 				"Each publishes connection (last will CONNECTIONBROKEN), state, visualization and factsheet on uagv/v2/triad/SERIAL/...",
-				"and executes orders and instant actions from master control (./triad run ... --robots vda5050:tcp://HOST:PORT).",
+				"and executes orders and instant actions from master control (./triad run ... --robots vda5050:ssl://HOST:PORT).",
 				"Exit code 2 for bad options or a broker that does not answer." })
 public final class RobotCommand implements Callable<Integer> {
-	@Option(names = "--broker", required = true, paramLabel = "tcp://HOST:PORT", description = "the MQTT broker (e.g. from ./triad broker)")
+	@Option(names = "--broker", required = true, paramLabel = "ssl://HOST:PORT", description = "the MQTT broker (e.g. from ./triad broker)")
 	private String broker;
+
+	@CommandLine.Mixin
+	private MqttCredentialsOption credentials = new MqttCredentialsOption();
 
 	@Option(names = "--serial", paramLabel = "SERIAL", description = "the robot's serial number (default: courier-1)")
 	private String serial;
@@ -49,6 +52,8 @@ public final class RobotCommand implements Callable<Integer> {
 		if (count != null && count < 1) {
 			throw new ModelSession.UserError("--count takes a number of robots >= 1, not " + count);
 		}
+		credentials.apply();
+		MqttCredentialsOption.warnIfPlain("robot", broker, spec.commandLine().getErr());
 		List<String> args = new ArrayList<>(List.of("--broker", broker, "--seed", Long.toString(seed), "--speed", Double.toString(speed)));
 		if (serial != null) {
 			args.addAll(List.of("--serial", serial));

@@ -56,6 +56,9 @@ public final class RunCommand implements Callable<Integer> {
 	@Option(names = "--serial", paramLabel = "SERIAL", description = "the VDA 5050 robot's serial number, with --robots (default: ${DEFAULT-VALUE})")
 	private String serial = "courier-1";
 
+	@CommandLine.Mixin
+	private MqttCredentialsOption credentials = new MqttCredentialsOption();
+
 	@CommandLine.Spec
 	private CommandLine.Model.CommandSpec spec;
 
@@ -110,9 +113,11 @@ public final class RunCommand implements Callable<Integer> {
 			throw new ModelSession.UserError("--fail injects failures into the dry run; it cannot be combined with --robots");
 		}
 		if (!robots.startsWith("vda5050:")) {
-			throw new ModelSession.UserError("--robots takes vda5050:tcp://HOST:PORT, not '" + robots + "'");
+			throw new ModelSession.UserError("--robots takes vda5050:ssl://HOST:PORT (or vda5050:tcp://HOST:PORT), not '" + robots + "'");
 		}
 		PrintWriter out = spec.commandLine().getOut();
+		credentials.apply();
+		MqttCredentialsOption.warnIfPlain("run", robots.substring("vda5050:".length()), spec.commandLine().getErr());
 		GoalSolver modelPlanner = modelPlanner(session);
 		try (MasterControl master = MasterControl.connect(robots.substring("vda5050:".length()), VdaTimeouts.defaults(),
 				line -> spec.commandLine().getErr().println(line))) {

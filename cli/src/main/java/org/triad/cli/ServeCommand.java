@@ -47,6 +47,16 @@ public final class ServeCommand implements Callable<Integer> {
 			description = "a properties file with submit-token= and operator-token= (else $TRIAD_SUBMIT_TOKEN/$TRIAD_OPERATOR_TOKEN, else generated once)")
 	private Path config;
 
+	@CommandLine.Mixin
+	private MqttCredentialsOption credentials = new MqttCredentialsOption();
+
+	@Option(names = "--https-keystore", paramLabel = "FILE.p12",
+			description = "serve HTTPS only, with this PKCS#12 certificate and key (password: --https-password-file or $TRIAD_HTTPS_PASSWORD)")
+	private Path httpsKeyStore;
+
+	@Option(names = "--https-password-file", paramLabel = "FILE", description = "a file whose first line is the key store's password")
+	private Path httpsPasswordFile;
+
 	@CommandLine.Spec
 	private CommandLine.Model.CommandSpec spec;
 
@@ -59,6 +69,10 @@ public final class ServeCommand implements Callable<Integer> {
 			new ApplicationLauncher(dir).classLoader(ServeCommand.class.getClassLoader())
 					.ifPresent(loader -> Thread.currentThread().setContextClassLoader(loader));
 		}
+		credentials.apply();
+		for (String r : robots) {
+			MqttCredentialsOption.warnIfPlain("serve", r.substring(r.indexOf(':') + 1), err);
+		}
 		if (port < 0 || port > 65535) {
 			err.println("triad serve: --port takes 0 to 65535, not " + port);
 			return 2;
@@ -67,9 +81,15 @@ public final class ServeCommand implements Callable<Integer> {
 		TriadService service;
 		try {
 			service = TriadService.start(new TriadService.Options(models, robots, situation, db != null ? db : dir.resolve(TriadService.DEFAULT_DB), config,
-					host, port, System.getenv()));
-		} catch (ServiceError e) {
+					host, port, environment()));
+		} catch (ServiceError | java.io.UncheckedIOException e) {
 			err.println("triad serve: " + e.getMessage());
+			Path file = db != null ? db : dir.resolve(TriadService.DEFAULT_DB);
+			if (Files.exists(file) || Files.exists(file.resolveSibling(file.getFileName() + ".mv.db"))) {
+				// the database was made (tokens included) before the start failed: how to get in, whatever it holds
+				err.println("  access, whatever this start left: ./triad users " + dir + (db != null ? " --db " + db : "")
+						+ " add NAME --role staff|operator|admin (a named user's token), or list");
+			}
 			return 2;
 		}
 		CountDownLatch stopped = new CountDownLatch(1);
@@ -85,11 +105,28 @@ public final class ServeCommand implements Callable<Integer> {
 			out.println("  staff page:    " + url + "/#token=" + service.tokens().submitToken());
 			out.println("  operator page: " + url + "/operator.html#token=" + service.tokens().operatorToken());
 		} else {
-			out.println("  staff page:    " + url + "/   operator page: " + url + "/operator.html   (tokens as configured)");
+			out.println("  staff page:    " + url + "/   operator page: " + url + "/operator.html   (tokens as configured, or a named"
+					+ " user's: ./triad users " + dir + " add NAME --role operator, while the service is stopped)");
 		}
 		out.println("  API: " + url + "/api/openapi.json; Ctrl-C stops");
 		out.flush();
 		stopped.await();
 		return 0;
+	}
+
+	/** The environment, with the HTTPS options in the variables the service reads. */
+	private java.util.Map<String, String> environment() {
+		java.util.Map<String, String> env = new java.util.HashMap<>(System.getenv());
+		if (httpsKeyStore != null) {
+			env.put("TRIAD_HTTPS_KEYSTORE", httpsKeyStore.toString());
+		}
+		if (httpsPasswordFile != null) {
+			try {
+				env.put("TRIAD_HTTPS_PASSWORD", Files.readAllLines(httpsPasswordFile).stream().findFirst().orElse("").strip());
+			} catch (java.io.IOException e) {
+				throw new java.io.UncheckedIOException("cannot read the HTTPS password file " + httpsPasswordFile + ": " + e.getMessage(), e);
+			}
+		}
+		return env;
 	}
 }

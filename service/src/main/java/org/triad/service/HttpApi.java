@@ -1,19 +1,21 @@
 package org.triad.service;
 
+import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.RejectedExecutionException;
+import java.util.Optional;
 import java.util.function.Consumer;
 
-import org.triad.service.AccessTokens.Role;
+import org.triad.service.auth.AuditLog;
+import org.triad.service.auth.FailedLogins;
+import org.triad.service.auth.Principal;
+import org.triad.service.auth.Role;
+import org.triad.service.auth.UserStore;
 import org.triad.service.TaskCatalog.InvalidSubmission;
 import org.triad.service.Views.LiveEvent;
 import org.triad.service.store.TaskState;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -30,28 +32,39 @@ import io.javalin.json.JavalinJackson;
  * {@code {"error": CODE, "message": TEXT[, "fields": [...]]}}, never a stack trace.
  */
 final class HttpApi {
-    /** Largest request body accepted, bytes: a submission is a few hundred. */
-    static final int MAX_BODY = 64 * 1024;
+    /** Largest request body accepted, bytes: a submission is a few hundred (see {@link RequestLimits}). */
+    static final int MAX_BODY = RequestLimits.MAX_BODY;
     private static final int MAX_LIST = 1000;
 
     private final FleetService service;
     private final AccessTokens tokens;
+    private final UserStore users;
+    private final AuditLog audit;
+    private final FailedLogins failedLogins;
     private final ObjectNode openApi;
-    private final ObjectMapper json = new ObjectMapper();
-    private final ExecutorService broadcaster = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "triad-live-events");
-        t.setDaemon(true);
-        return t;
-    });
+    private final ObjectMapper json = RequestLimits.mapper();
+    private final EventStreams events = new EventStreams(System.err::println);
+    private final Consumer<LiveEvent> eventListener = events::publish;
     private final Javalin app;
+    private final HttpsSettings https;
+    private volatile String listenHost;
+    private volatile int listenPort;
 
-    HttpApi(FleetService service, AccessTokens tokens, ObjectNode openApi) {
+    HttpApi(FleetService service, AccessTokens tokens, UserStore users, AuditLog audit, ObjectNode openApi, HttpsSettings https) {
+        this.https = https;
         this.service = service;
         this.tokens = tokens;
+        this.users = users;
+        this.audit = audit;
+        this.failedLogins = new FailedLogins(audit);
         this.openApi = openApi;
         this.app = Javalin.create(config -> {
             config.showJavalinBanner = false;
             config.http.maxRequestSize = MAX_BODY;
+            if (https != null) {
+                // the only connector: Javalin adds its plain HTTP one only when none is configured
+                config.jetty.addConnector((server, http) -> https.connector(server, http, listenHost, listenPort));
+            }
             config.jsonMapper(new JavalinJackson(json, false));
             config.staticFiles.add(files -> {
                 files.hostedPath = "/";
@@ -60,20 +73,46 @@ final class HttpApi {
             });
         });
         routes();
+        service.addListener(eventListener);
     }
 
     private void routes() {
+        app.before(SecurityHeaders::apply);
         app.before("/api/*", ctx -> {
             if (ctx.path().equals("/api/openapi.json")) {
                 return;
             }
             if (ctx.contentLength() > MAX_BODY) {
-                throw new ServiceError(413, "too-large", "the body has " + ctx.contentLength() + " bytes; at most " + MAX_BODY + " are accepted");
+                ctx.header("Connection", "close");
+                throw new ServiceError(413, "too-large", "the body has " + ctx.contentLength() + " bytes; at most " + MAX_BODY + " are accepted (the body limit)");
             }
             String presented = bearer(ctx);
-            Role role = tokens.roleOf(presented).orElseThrow(() -> new ServiceError(401, "unauthorized",
-                    presented == null ? "a token is needed: 'Authorization: Bearer TOKEN' (or ?token=TOKEN)" : "the token is not valid"));
-            ctx.attribute("role", role);
+            Principal principal = authenticate(presented);
+            if (principal == null) {
+                if (hasBody(ctx)) {
+                    ctx.header("Connection", "close"); // its body is never read
+                }
+                if (presented != null) {
+                    failedLogins.record(presented, ctx.method() + " " + ctx.path() + " from " + ctx.ip(), Instant.now());
+                }
+                throw new ServiceError(401, "unauthorized", presented == null ? "a token is needed: 'Authorization: Bearer TOKEN'"
+                        + (ctx.queryParam("token") != null ? " (?token= is accepted only by the event stream /api/events)" : "")
+                        : "the token is not valid");
+            }
+            ctx.attribute("principal", principal);
+            if (hasBody(ctx)) {
+                ctx.attribute("body", RequestLimits.read(ctx));
+            }
+        });
+        app.before("/api/events", ctx -> {
+            String accept = ctx.header("Accept");
+            if (accept == null || !accept.contains("text/event-stream")) {
+                throw new ServiceError(406, "not-acceptable", "/api/events is a stream of server-sent events: send 'Accept: text/event-stream'");
+            }
+            if (events.clients() >= EventStreams.MAX_CLIENTS) {
+                throw new ServiceError(503, "too-many-streams", "already " + EventStreams.MAX_CLIENTS
+                        + " event-stream clients (the limit); try again later");
+            }
         });
         app.get("/api/openapi.json", ctx -> ctx.json(openApi));
         app.get("/api/tasks", ctx -> {
@@ -88,16 +127,22 @@ final class HttpApi {
         });
         app.post("/api/tasks", ctx -> ctx.status(201).json(service.submit(body(ctx))));
         app.get("/api/tasks/{id}", ctx -> ctx.json(service.task(id(ctx)).orElseThrow(() -> new ServiceError(404, "not-found", "no task " + ctx.pathParam("id")))));
-        app.delete("/api/tasks/{id}", ctx -> ctx.json(service.cancel(id(ctx), role(ctx) == Role.OPERATOR ? "the operator" : "staff")));
+        app.delete("/api/tasks/{id}", ctx -> {
+            long id = id(ctx);
+            Principal p = principal(ctx);
+            ctx.json(service.cancel(id, p.describe()));
+            audited(ctx, "cancel", "task " + id);
+        });
         app.post("/api/tasks/{id}/retry", ctx -> {
             operator(ctx);
             ctx.json(service.retry(id(ctx)));
+            audited(ctx, "retry", "task " + id(ctx));
         });
         app.post("/api/tasks/{id}/reassign", ctx -> {
             operator(ctx);
             long id = id(ctx);
             String robot = null;
-            if (!ctx.body().isBlank()) {
+            if (!new String(bodyBytes(ctx), java.nio.charset.StandardCharsets.UTF_8).isBlank()) {
                 JsonNode b = body(ctx);
                 JsonNode r = b.get("robot");
                 if (r != null && !r.isNull() && !r.isTextual()) {
@@ -106,10 +151,12 @@ final class HttpApi {
                 robot = r == null || r.isNull() || r.textValue().isBlank() ? null : r.textValue();
             }
             ctx.json(service.reassign(id, robot));
+            audited(ctx, "reassign", "task " + id + " to " + (robot == null ? "any robot" : robot));
         });
         app.post("/api/tasks/{id}/done", ctx -> {
             operator(ctx);
             ctx.json(service.markDone(id(ctx)));
+            audited(ctx, "mark-done", "task " + id(ctx));
         });
         app.get("/api/robots", ctx -> ctx.json(service.robots()));
         app.get("/api/robots/{name}/floor", ctx -> ctx.json(service.floor(ctx.pathParam("name"))
@@ -117,28 +164,68 @@ final class HttpApi {
         app.post("/api/robots/{name}/offline", ctx -> {
             operator(ctx);
             ctx.json(service.setOnline(ctx.pathParam("name"), false));
+            audited(ctx, "robot-offline", "robot " + ctx.pathParam("name"));
         });
         app.post("/api/robots/{name}/online", ctx -> {
             operator(ctx);
             ctx.json(service.setOnline(ctx.pathParam("name"), true));
+            audited(ctx, "robot-online", "robot " + ctx.pathParam("name"));
+        });
+        app.get("/api/audit", ctx -> {
+            require(ctx, Role.OPERATOR);
+            ctx.json(audit.recent(MAX_LIST));
+        });
+        app.get("/api/users", ctx -> {
+            require(ctx, Role.ADMIN);
+            ctx.json(users.list());
+        });
+        app.post("/api/users", ctx -> {
+            require(ctx, Role.ADMIN);
+            JsonNode b = body(ctx);
+            JsonNode name = b.get("name");
+            JsonNode role = b.get("role");
+            String token;
+            try {
+                token = users.add(name == null ? null : name.asText(), Role.of(role == null ? "" : role.asText()), Instant.now());
+            } catch (IllegalArgumentException e) {
+                throw new ServiceError(422, "invalid-user", e.getMessage());
+            }
+            audited(ctx, "user-add", name.asText() + " as " + role.asText());
+            ctx.status(201).json(Map.of("name", name.asText(), "role", role.asText(), "token", token));
+        });
+        app.delete("/api/users/{name}", ctx -> {
+            require(ctx, Role.ADMIN);
+            String name = ctx.pathParam("name");
+            if (!users.revoke(name, Instant.now())) {
+                throw new ServiceError(404, "not-found", "no user '" + name + "' to revoke (unknown or revoked already)");
+            }
+            audited(ctx, "user-revoke", name);
+            ctx.json(Map.of("name", name, "revoked", true));
         });
         app.get("/api/requests", ctx -> ctx.json(service.requests("true".equals(ctx.queryParam("all")))));
         app.sse("/api/events", client -> {
             client.keepAlive();
-            Consumer<LiveEvent> listener = e -> {
-                try {
-                    broadcaster.execute(() -> {
-                        if (!client.terminated()) {
-                            client.sendEvent(e.type(), e.data());
-                        }
-                    });
-                } catch (RejectedExecutionException stopped) {
-                    // the service is stopping
-                }
-            };
-            service.addListener(listener);
-            client.onClose(() -> service.removeListener(listener));
-            client.sendEvent("hello", Map.of("robots", service.robots()));
+            try {
+                EventStreams.Subscriber s = events.open(String.valueOf(client.ctx().req().getRemoteAddr()) + ":" + client.ctx().req().getRemotePort(),
+                        new EventStreams.Sink() {
+                            @Override
+                            public void send(String type, Object data) throws java.io.IOException {
+                                client.sendEvent(type, data);
+                                if (client.terminated()) {
+                                    throw new java.io.IOException("the client went away");
+                                }
+                            }
+
+                            @Override
+                            public void close() {
+                                client.close();
+                            }
+                        }, new LiveEvent("hello", Map.of("robots", service.robots())));
+                client.onClose(() -> s.drop(null));
+            } catch (ServiceError full) {
+                client.sendEvent("error", error(full.code(), full.getMessage()));
+                client.close();
+            }
         });
 
         app.exception(InvalidSubmission.class, (e, ctx) -> {
@@ -153,7 +240,7 @@ final class HttpApi {
             case 413 -> error("too-large", "the body is larger than " + MAX_BODY + " bytes");
             default -> error("http-" + e.getStatus(), e.getMessage());
         }));
-        app.exception(Exception.class, (e, ctx) -> ctx.status(500).json(error("internal", "the service failed: " + e)));
+        app.exception(Exception.class, (e, ctx) -> ctx.status(500).json(error("internal", "the service failed: " + e.getClass().getSimpleName())));
         app.error(404, ctx -> {
             String result = ctx.result();
             if (ctx.path().startsWith("/api") && (result == null || !result.startsWith("{"))) {
@@ -174,22 +261,53 @@ final class HttpApi {
         return m;
     }
 
+    /** The token: from the Authorization header; from {@code ?token=} only for the event stream (EventSource cannot set headers). */
     private static String bearer(Context ctx) {
         String h = ctx.header("Authorization");
         if (h != null && h.regionMatches(true, 0, "Bearer ", 0, 7)) {
             return h.substring(7).strip();
         }
-        return ctx.queryParam("token");
+        return ctx.path().equals("/api/events") ? ctx.queryParam("token") : null;
     }
 
-    private static Role role(Context ctx) {
-        return ctx.attribute("role");
+    private static boolean hasBody(Context ctx) {
+        return ctx.contentLength() > 0 || ctx.header("Transfer-Encoding") != null;
+    }
+
+    private static byte[] bodyBytes(Context ctx) {
+        byte[] b = ctx.attribute("body");
+        return b == null ? new byte[0] : b;
+    }
+
+    /** The shared tokens first (staff-token, operator-token), then the named users; null if neither knows the token. */
+    private Principal authenticate(String presented) {
+        if (presented == null) {
+            return null;
+        }
+        Optional<AccessTokens.Role> shared = tokens.roleOf(presented);
+        if (shared.isPresent()) {
+            return shared.get() == AccessTokens.Role.OPERATOR ? new Principal("operator-token", Role.OPERATOR) : new Principal("staff-token", Role.STAFF);
+        }
+        return users.authenticate(presented).orElse(null);
+    }
+
+    private static Principal principal(Context ctx) {
+        return ctx.attribute("principal");
+    }
+
+    private static void require(Context ctx, Role needed) {
+        Principal p = principal(ctx);
+        if (!p.role().allows(needed)) {
+            throw new ServiceError(403, "forbidden", "this needs the " + needed.label() + " role; " + p.name() + " is " + p.role().label());
+        }
     }
 
     private static void operator(Context ctx) {
-        if (role(ctx) != Role.OPERATOR) {
-            throw new ServiceError(403, "forbidden", "this needs the operator token");
-        }
+        require(ctx, Role.OPERATOR);
+    }
+
+    private void audited(Context ctx, String what, String detail) {
+        audit.record(principal(ctx).describe(), what, detail, Instant.now());
     }
 
     private static long id(Context ctx) {
@@ -201,30 +319,20 @@ final class HttpApi {
     }
 
     private JsonNode body(Context ctx) {
-        String text = ctx.body();
-        if (text.length() > MAX_BODY) {
-            throw new ServiceError(413, "too-large", "the body is larger than " + MAX_BODY + " bytes");
-        }
-        try {
-            JsonNode n = json.readTree(text);
-            if (n == null || n.isMissingNode()) {
-                throw new ServiceError(400, "malformed-json", "the body is empty; expected a JSON object");
-            }
-            return n;
-        } catch (JsonProcessingException e) {
-            throw new ServiceError(400, "malformed-json", "the body is not JSON: " + e.getOriginalMessage() + " at line "
-                    + e.getLocation().getLineNr() + ", column " + e.getLocation().getColumnNr());
-        }
+        return RequestLimits.parse(json, bodyBytes(ctx));
     }
 
     /** Starts listening on {@code host:port} (0: a free port); returns the port. */
     int start(String host, int port) {
+        listenHost = host;
+        listenPort = port;
         app.start(host, port);
         return app.port();
     }
 
     void stop() {
-        broadcaster.shutdownNow();
+        service.removeListener(eventListener);
+        events.close();
         app.stop();
     }
 }

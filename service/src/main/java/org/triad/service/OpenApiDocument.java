@@ -121,7 +121,27 @@ public final class OpenApiDocument {
         ObjectNode stream = op(events, "get", "events", "Server-sent events: 'task' (a task changed, with its newest Status event), 'robot', 'request'.");
         stream.putObject("responses").putObject("200").put("description", "An event stream").putObject("content").putObject("text/event-stream")
                 .putObject("schema").put("type", "string");
-        errors(stream, "401");
+        errors(stream, "401", "406");
+        ObjectNode audit = paths.putObject("/api/audit");
+        ObjectNode auditGet = op(audit, "get", "auditLog", "Operator: who did what when (operator and admin actions, cancellations, failed logins), newest first.");
+        response(auditGet, "200", "The newest 1000 entries", JSON.objectNode().put("type", "array").set("items", JSON.objectNode().put("type", "object")));
+        errors(auditGet, "401", "403");
+        ObjectNode users = paths.putObject("/api/users");
+        ObjectNode usersGet = op(users, "get", "listUsers", "Admin: the named users with their roles (revoked ones too).");
+        response(usersGet, "200", "The users", JSON.objectNode().put("type", "array").set("items", JSON.objectNode().put("type", "object")));
+        errors(usersGet, "401", "403");
+        ObjectNode usersPost = op(users, "post", "addUser", "Admin: adds a user {name, role: staff|operator|admin}; the answer has its token, shown only now.");
+        ObjectNode userBody = usersPost.putObject("requestBody").put("required", true).putObject("content").putObject("application/json").putObject("schema");
+        userBody.put("type", "object").putArray("required").add("name").add("role");
+        userBody.putObject("properties").<ObjectNode>set("name", JSON.objectNode().put("type", "string").put("maxLength", 64))
+                .set("role", JSON.objectNode().put("type", "string").set("enum", JSON.arrayNode().add("staff").add("operator").add("admin")));
+        response(usersPost, "201", "The user and its token", JSON.objectNode().put("type", "object"));
+        errors(usersPost, "400", "401", "403", "413", "422");
+        ObjectNode user = paths.putObject("/api/users/{name}");
+        user.putArray("parameters").addObject().put("name", "name").put("in", "path").put("required", true).putObject("schema").put("type", "string");
+        ObjectNode revoke = op(user, "delete", "revokeUser", "Admin: revokes the user; its token is refused from now on.");
+        response(revoke, "200", "Revoked", JSON.objectNode().put("type", "object"));
+        errors(revoke, "401", "403", "404");
         ObjectNode openapi = paths.putObject("/api/openapi.json");
         ObjectNode self = op(openapi, "get", "openapi", "This document.");
         self.putArray("security");
@@ -275,12 +295,13 @@ public final class OpenApiDocument {
     private static void errors(ObjectNode op, String... codes) {
         for (String c : codes) {
             response(op, c, switch (c) {
-                case "400" -> "Malformed request (not JSON, not an object)";
+                case "400" -> "Malformed request (not JSON, not an object), or past a limit: JSON depth 32, numbers of 40 characters, strings of 1000";
                 case "401" -> "No valid token";
-                case "403" -> "The token may not do this (operator token needed)";
-                case "404" -> "No such task or robot";
+                case "403" -> "The user's role may not do this (operator or admin needed)";
+                case "404" -> "No such task, robot or user";
+                case "406" -> "Not asked for as text/event-stream";
                 case "409" -> "The task is not in a state that allows this";
-                case "413" -> "Body too large";
+                case "413" -> "Body larger than 65536 bytes (refused as it is read)";
                 case "422" -> "The submission does not fit the task models (per-field errors)";
                 default -> "The database is unavailable";
             }, ref("Error"));

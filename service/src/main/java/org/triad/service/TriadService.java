@@ -19,6 +19,8 @@ import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.GoalSolver;
 import org.triad.service.store.TaskStore;
+import org.triad.service.auth.AuditLog;
+import org.triad.service.auth.UserStore;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
@@ -54,8 +56,11 @@ public final class TriadService implements AutoCloseable {
     private final HttpApi http;
     private final int port;
     private final String host;
+    private final boolean secure;
 
-    private TriadService(ApplicationModels models, TaskStore store, AccessTokens tokens, FleetService fleet, HttpApi http, String host, int port) {
+    private TriadService(ApplicationModels models, TaskStore store, AccessTokens tokens, FleetService fleet, HttpApi http, String host, int port,
+            boolean secure) {
+        this.secure = secure;
         this.models = models;
         this.store = store;
         this.tokens = tokens;
@@ -71,6 +76,7 @@ public final class TriadService implements AutoCloseable {
      * @throws ServiceError a start-up error (bad models, robots, database, port) with a one-line message
      */
     public static TriadService start(Options o) {
+        HttpsSettings https = HttpsSettings.from(o.env()); // a certificate that cannot be used stops the start before anything else
         ApplicationModels models = ApplicationModels.load(o.models());
         Path dbFile = o.db() != null ? o.db() : o.models().resolve(DEFAULT_DB);
         TaskStore store = TaskStore.open(dbFile);
@@ -82,7 +88,7 @@ public final class TriadService implements AutoCloseable {
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
-            HttpApi http = new HttpApi(fleet, tokens, openApi);
+            HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https);
             int port;
             try {
                 port = http.start(o.host(), o.port());
@@ -90,7 +96,7 @@ public final class TriadService implements AutoCloseable {
                 http.stop();
                 throw ServiceError.startup(bindFailure(o, e));
             }
-            return new TriadService(models, store, tokens, fleet, http, o.host(), port);
+            return new TriadService(models, store, tokens, fleet, http, o.host(), port, https != null);
         } catch (RuntimeException e) {
             if (fleet != null) {
                 fleet.close();
@@ -214,9 +220,9 @@ public final class TriadService implements AutoCloseable {
         return port;
     }
 
-    /** {@code http://HOST:PORT} */
+    /** {@code http://HOST:PORT}, or {@code https://HOST:PORT} when given a certificate */
     public String url() {
-        return "http://" + (host.contains(":") ? "[" + host + "]" : host) + ":" + port;
+        return (secure ? "https" : "http") + "://" + (host.contains(":") ? "[" + host + "]" : host) + ":" + port;
     }
 
     public AccessTokens tokens() {
@@ -225,6 +231,11 @@ public final class TriadService implements AutoCloseable {
 
     public FleetService fleet() {
         return fleet;
+    }
+
+    /** The database (for the users and audit stores, and tests). */
+    public TaskStore store() {
+        return store;
     }
 
     public Path database() {

@@ -271,6 +271,23 @@ public final class TaskStore implements AutoCloseable {
         }
     }
 
+    // ---- for the users and audit store (org.triad.service.auth) ---------------------------------
+
+    /** SQL run on the store's one connection. */
+    @FunctionalInterface
+    public interface SqlWork<T> {
+        T apply(Connection connection) throws SQLException;
+    }
+
+    /** Runs {@code work} on the store's connection, one writer at a time; a failure is a 503 like the store's own. */
+    public synchronized <T> T withConnection(SqlWork<T> work) {
+        try {
+            return work.apply(connection);
+        } catch (SQLException e) {
+            throw unavailable(e);
+        }
+    }
+
     @Override
     public synchronized void close() {
         try {

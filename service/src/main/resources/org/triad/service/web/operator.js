@@ -14,9 +14,11 @@
       robotNames = robots.map(r => r.name);
       robots.forEach(showRobot);
       showRequests(await api("GET", "/api/requests"));
+      refreshAudit();
       const source = live({
         robot: showRobot,
-        requests: showRequests,
+        requests: r => { showRequests(r); refreshAudit(); },
+        task: refreshAudit,
         hello: d => d.robots.forEach(showRobot),
       });
       source.onopen = () => document.getElementById("connection").textContent = "live";
@@ -76,6 +78,16 @@
         " ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
           r.online ? "Take offline" : "Put online")),
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
+  }
+
+  let auditBusy = false;
+  function refreshAudit() {
+    if (auditBusy) return;
+    auditBusy = true;
+    api("GET", "/api/audit").then(entries => {
+      document.querySelector("#audit tbody").replaceChildren(...entries.slice(0, 200).map(e =>
+        el("tr", {}, el("td", {}, new Date(e.at).toLocaleString()), el("td", {}, e.who), el("td", {}, e.what), el("td", {}, e.detail))));
+    }).catch(() => {}).finally(() => auditBusy = false);
   }
 
   async function refreshMaps() {

@@ -1,7 +1,8 @@
 // Shared by the staff and operator pages: the token, calls to the API, and the live event stream.
 "use strict";
 const Triad = (() => {
-  const KEY = "triad-token";
+  // one token per page: opening the staff link does not turn an open operator page into a staff one
+  const KEY = "triad-token-" + (location.pathname.startsWith("/operator") ? "operator" : "staff");
   const fromHash = new URLSearchParams(location.hash.slice(1)).get("token");
   if (fromHash) {
     localStorage.setItem(KEY, fromHash);

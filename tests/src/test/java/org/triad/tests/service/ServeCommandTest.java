@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -36,7 +37,10 @@ class ServeCommandTest {
 				"--db", dir.resolve("db").toString());
 		assertEquals(2, run.exit());
 		assertTrue(run.err().startsWith("triad serve: unknown robot scheme 'warp'; for Hospital: sim:N"), run.err());
-		assertEquals(1, run.err().strip().lines().count(), run.err());
+		// the error, then how to get access whatever this failed start left in the database (issue 25)
+		List<String> lines = run.err().strip().lines().toList();
+		assertEquals(2, lines.size(), run.err());
+		assertTrue(lines.get(1).startsWith("  access, whatever this start left: ./triad users "), run.err());
 	}
 
 	@Test

@@ -140,6 +140,15 @@ class ServicePagesBrowserTest {
             });
             assertTrue(api.get("/api/tasks/" + id).contains("retried by the operator on dry-1"));
             assertEquals("None open.", browser.findElement(By.id("no-requests")).getText());
+            // the audit log on the page names who retried (issue 25)
+            waitUpTo(20).until(d -> d.findElement(By.id("audit")).getText().contains("retry"));
+            assertTrue(browser.findElement(By.id("audit")).getText().contains("operator-token (operator) retry task " + id),
+                    browser.findElement(By.id("audit")).getText());
+            // one session per role: following the staff link does not turn the operator page into a staff one
+            browser.get(service.url() + "/#token=" + SUBMIT);
+            browser.get(service.url() + "/operator.html");
+            assertEquals(OPERATOR, browser.executeScript("return localStorage.getItem('triad-token-operator')"));
+            assertEquals(SUBMIT, browser.executeScript("return localStorage.getItem('triad-token-staff')"));
         } finally {
             api.post("/api/robots/dry-1/offline", "");
             api.post("/api/robots/sim-1/online", "");

@@ -14,6 +14,8 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 
+import org.triad.vda5050.security.BrokerCredentials;
+
 /**
  * A real Eclipse Mosquitto broker (the Debian package {@code mosquitto}) as a child process, for scripts,
  * {@code ./triad broker} and tests: listening on 127.0.0.1 on a free port (or a given one), configured from
@@ -24,12 +26,14 @@ import java.util.concurrent.TimeUnit;
 public final class MosquittoBroker implements AutoCloseable {
     private final Path dir;
     private final int port;
+    private final BrokerCredentials credentials;
     private Process process;
     private final Thread reaper;
 
-    private MosquittoBroker(Path dir, int port) {
+    private MosquittoBroker(Path dir, int port, BrokerCredentials credentials) {
         this.dir = dir;
         this.port = port;
+        this.credentials = credentials;
         this.reaper = new Thread(this::kill, "mosquitto-reaper-" + port);
         Runtime.getRuntime().addShutdownHook(reaper);
     }
@@ -39,13 +43,26 @@ public final class MosquittoBroker implements AutoCloseable {
         return start(dir, freePort());
     }
 
-    /** Starts a broker on the given loopback port. */
+    /** Starts a broker on the given loopback port: plain TCP, anonymous clients (tests and benchmarks on one machine). */
     public static MosquittoBroker start(Path dir, int port) {
+        return start(dir, port, null);
+    }
+
+    /**
+     * Starts a secured broker on the given loopback port: TLS with client certificates, a password per identity
+     * and the access control list of {@code credentials} (see {@link BrokerCredentials}); anonymous clients
+     * are refused. Its address is {@code ssl://127.0.0.1:PORT}.
+     */
+    public static MosquittoBroker startSecured(Path dir, int port, BrokerCredentials credentials) {
+        return start(dir, port, Objects.requireNonNull(credentials, "credentials"));
+    }
+
+    private static MosquittoBroker start(Path dir, int port, BrokerCredentials credentials) {
         Objects.requireNonNull(dir, "dir");
         if (port < 1 || port > 65535) {
             throw new IllegalArgumentException("a port is 1..65535, not " + port);
         }
-        MosquittoBroker b = new MosquittoBroker(dir.toAbsolutePath(), port);
+        MosquittoBroker b = new MosquittoBroker(dir.toAbsolutePath(), port, credentials);
         try {
             b.launch();
         } catch (RuntimeException e) {
@@ -55,9 +72,14 @@ public final class MosquittoBroker implements AutoCloseable {
         return b;
     }
 
-    /** {@code tcp://127.0.0.1:PORT}. */
+    /** {@code tcp://127.0.0.1:PORT}, or {@code ssl://127.0.0.1:PORT} when it is secured. */
     public String url() {
-        return "tcp://127.0.0.1:" + port;
+        return (credentials != null ? "ssl" : "tcp") + "://127.0.0.1:" + port;
+    }
+
+    /** The credentials folder of a secured broker, or null for a plain one. */
+    public BrokerCredentials credentials() {
+        return credentials;
     }
 
     public int port() {
@@ -125,8 +147,13 @@ public final class MosquittoBroker implements AutoCloseable {
         try {
             Files.createDirectories(dir);
             Path conf = dir.resolve("mosquitto.conf");
-            Files.writeString(conf, config().replace("${port}", Integer.toString(port)).replace("${dir}", dir.toString())
-                    .replace("${user}", System.getProperty("user.name")));
+            String text = config(credentials != null ? "/vda5050/mosquitto-secured.conf" : "/vda5050/mosquitto.conf")
+                    .replace("${port}", Integer.toString(port)).replace("${dir}", dir.toString())
+                    .replace("${user}", System.getProperty("user.name"));
+            if (credentials != null) {
+                text = text.replace("${credentials}", credentials.dir().toString());
+            }
+            Files.writeString(conf, text);
             process = new ProcessBuilder(List.of(executable, "-c", conf.toString()))
                     .redirectErrorStream(true)
                     .redirectOutput(dir.resolve("mosquitto.out").toFile())
@@ -141,10 +168,19 @@ public final class MosquittoBroker implements AutoCloseable {
             }
             try (Socket s = new Socket()) {
                 s.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 200);
-                return;
             } catch (IOException e) {
                 sleep(50);
+                continue;
             }
+            // Mosquitto listens before it loads its certificates: one it cannot load ends it right after
+            try {
+                if (credentials != null && process.waitFor(300, TimeUnit.MILLISECONDS)) {
+                    throw new IllegalStateException("mosquitto exited at start-up (port " + port + "): " + tail());
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            return;
         }
         kill();
         throw new IllegalStateException("mosquitto did not listen on 127.0.0.1:" + port + " within 10 s: " + tail());
@@ -155,6 +191,11 @@ public final class MosquittoBroker implements AutoCloseable {
             try {
                 if (Files.exists(p) && Files.size(p) > 0) {
                     List<String> lines = Files.readAllLines(p);
+                    for (String l : lines) {
+                        if (l.contains(": Error: ")) {
+                            return l.substring(l.indexOf("Error: "));
+                        }
+                    }
                     return String.join(" | ", lines.subList(Math.max(0, lines.size() - 3), lines.size()));
                 }
             } catch (IOException e) {
@@ -178,10 +219,10 @@ public final class MosquittoBroker implements AutoCloseable {
         throw new IllegalStateException("mosquitto is not installed (Debian: apt-get install mosquitto)");
     }
 
-    private static String config() {
-        try (InputStream in = MosquittoBroker.class.getResourceAsStream("/vda5050/mosquitto.conf")) {
+    private static String config(String resource) {
+        try (InputStream in = MosquittoBroker.class.getResourceAsStream(resource)) {
             if (in == null) {
-                throw new IllegalStateException("vda5050/mosquitto.conf is missing from the class path");
+                throw new IllegalStateException(resource + " is missing from the class path");
             }
             return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         } catch (IOException e) {

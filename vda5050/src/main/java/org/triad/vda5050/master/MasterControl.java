@@ -49,7 +49,7 @@ public final class MasterControl implements AutoCloseable {
         Objects.requireNonNull(timeouts, "timeouts");
         Objects.requireNonNull(log, "log");
         String clientId = "triad-master-" + ProcessHandle.current().pid() + "-" + Long.toHexString(System.nanoTime() & 0xffffff);
-        MqttLink link = MqttLink.connect(broker, clientId, null, log, 10, 5);
+        MqttLink link = MqttLink.connect(broker, org.triad.vda5050.security.BrokerCredentials.MASTER, clientId, null, log, 10, 5);
         MasterControl m = new MasterControl(link, timeouts, log);
         link.onReconnect(() -> m.agvs.values().forEach(RemoteAgv::masterReconnected));
         link.subscribe(Topic.STATE.ofAll(), m::route);
@@ -66,7 +66,7 @@ public final class MasterControl implements AutoCloseable {
     /** The AGV with this manufacturer and serial number; the same object for the same AGV. */
     public RemoteAgv agv(String manufacturer, String serialNumber) {
         Topic.ORDER.of(manufacturer, serialNumber); // rejects names unusable in topics
-        return agvs.computeIfAbsent(manufacturer + "/" + serialNumber, k -> new RemoteAgv(link, manufacturer, serialNumber, timeouts));
+        return agvs.computeIfAbsent(manufacturer + "/" + serialNumber, k -> new RemoteAgv(link, manufacturer, serialNumber, timeouts, log));
     }
 
     public String broker() {

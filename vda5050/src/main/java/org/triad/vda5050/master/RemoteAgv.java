@@ -63,17 +63,18 @@ public final class RemoteAgv implements FailureExplaining {
     private long connectionNanos;
     private long masterReconnectNanos;
     private JsonNode factsheet;
-    private int lastStateHeaderId = -1;
+    private final StateScreen screen;
     private String lastFailure;
     private long orderToFirstState = -1;
     /** An order this master gave up on (silence, a broken connection, a timeout) that the AGV may still be running. */
     private String abandonedOrder;
 
-    RemoteAgv(MqttLink link, String manufacturer, String serialNumber, VdaTimeouts timeouts) {
+    RemoteAgv(MqttLink link, String manufacturer, String serialNumber, VdaTimeouts timeouts, java.util.function.Consumer<String> log) {
         this.link = link;
         this.manufacturer = manufacturer;
         this.serialNumber = serialNumber;
         this.timeouts = timeouts;
+        this.screen = new StateScreen(manufacturer + "/" + serialNumber, log);
     }
 
     public String serialNumber() {
@@ -258,6 +259,7 @@ public final class RemoteAgv implements FailureExplaining {
         synchronized (lock) {
             orderToFirstState = -1;
         }
+        screen.sent(orderId);
         publish(Topic.ORDER, new Order(headerIds.next(Topic.ORDER), HeaderIds.now(), Header.VERSION, manufacturer, serialNumber, orderId, 0,
                 null, nodes, edges));
         return awaitOutcome(call, sent, s -> {
@@ -441,17 +443,16 @@ public final class RemoteAgv implements FailureExplaining {
         synchronized (lock) {
             if (h instanceof AgvState s) {
                 // a duplicate (QoS 1) or an older state overtaken by a newer one; a restarted AGV says ONLINE first
-                if (s.headerId() <= lastStateHeaderId) {
+                if (!screen.accept(s)) {
                     return;
                 }
-                lastStateHeaderId = s.headerId();
                 state = s;
                 stateNanos = System.nanoTime();
             } else if (h instanceof Connection c) {
                 connection = c.connectionState();
                 connectionNanos = System.nanoTime();
                 if (connection == ConnectionState.ONLINE) {
-                    lastStateHeaderId = -1;
+                    screen.reset();
                 }
             }
             lock.notifyAll();

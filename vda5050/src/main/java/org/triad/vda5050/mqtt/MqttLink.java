@@ -22,11 +22,11 @@ import org.eclipse.paho.client.mqttv3.MqttConnectOptions;
 import org.eclipse.paho.client.mqttv3.MqttException;
 import org.eclipse.paho.client.mqttv3.MqttMessage;
 import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
-import org.triad.vda5050.protocol.Header;
 import org.triad.vda5050.protocol.MessageSchemas;
 import org.triad.vda5050.protocol.Topic;
 import org.triad.vda5050.protocol.VdaJson;
 import org.triad.vda5050.protocol.VdaMessageException;
+import org.triad.vda5050.security.ClientCredentials;
 
 /**
  * One MQTT connection of a VDA 5050 participant (master control or AGV) through Eclipse Paho: QoS 1,
@@ -71,6 +71,18 @@ public final class MqttLink implements AutoCloseable {
      */
     public static MqttLink connect(String broker, String clientId, Will will, Consumer<String> problems, int keepAliveSeconds,
             double timeoutSeconds) {
+        return connect(broker, null, clientId, will, problems, keepAliveSeconds, timeoutSeconds);
+    }
+
+    /**
+     * Connects as {@code identity} (master control's or a robot's serial number): on a secured broker
+     * ({@code ssl://HOST:PORT}) with that identity's client certificate and password from the credentials
+     * folder ({@link ClientCredentials#configuredFolder()}); on plain TCP the identity is not used.
+     *
+     * @throws IllegalArgumentException when a secured broker is named and the identity's credentials are missing
+     */
+    public static MqttLink connect(String broker, String identity, String clientId, Will will, Consumer<String> problems,
+            int keepAliveSeconds, double timeoutSeconds) {
         Objects.requireNonNull(problems, "problems");
         URI uri = brokerUri(broker);
         MqttLink link;
@@ -86,7 +98,14 @@ public final class MqttLink implements AutoCloseable {
         o.setKeepAliveInterval(keepAliveSeconds);
         o.setConnectionTimeout((int) Math.max(1, Math.ceil(timeoutSeconds)));
         o.setMaxInflight(1000);
-        o.setSocketFactory(new NoDelaySocketFactory());
+        if ("ssl".equals(uri.getScheme())) {
+            ClientCredentials c = secured(broker, identity);
+            o.setUserName(c.identity());
+            o.setPassword(c.password());
+            o.setSocketFactory(new NoDelaySslSocketFactory(c.socketFactory()));
+        } else {
+            o.setSocketFactory(new NoDelaySocketFactory());
+        }
         if (will != null) {
             o.setWill(will.mqttTopic(), validated(will.mqttTopic(), will.message()), 1, true);
         }
@@ -102,6 +121,11 @@ public final class MqttLink implements AutoCloseable {
             link.connected = true;
         } catch (MqttException e) {
             link.closeQuietly();
+            if (e.getReasonCode() == MqttException.REASON_CODE_FAILED_AUTHENTICATION
+                    || e.getReasonCode() == MqttException.REASON_CODE_NOT_AUTHORIZED) {
+                throw new BrokerUnreachableException("the MQTT broker at " + uri.getHost() + ":" + uri.getPort() + " (" + broker
+                        + ") refused " + (o.getUserName() != null ? "'" + o.getUserName() + "'" : "an anonymous client") + ": " + reason(e), e);
+            }
             throw new BrokerUnreachableException("no MQTT broker at " + uri.getHost() + ":" + uri.getPort() + " (" + broker + "): "
                     + reason(e), e);
         }
@@ -113,12 +137,22 @@ public final class MqttLink implements AutoCloseable {
         try {
             uri = URI.create(broker);
         } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected tcp://HOST:PORT)");
+            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected ssl://HOST:PORT or tcp://HOST:PORT)");
         }
-        if (!"tcp".equals(uri.getScheme()) || uri.getHost() == null || uri.getPort() < 0) {
-            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected tcp://HOST:PORT)");
+        if (!("tcp".equals(uri.getScheme()) || "ssl".equals(uri.getScheme())) || uri.getHost() == null || uri.getPort() < 0) {
+            throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected ssl://HOST:PORT or tcp://HOST:PORT)");
         }
         return uri;
+    }
+
+    private static ClientCredentials secured(String broker, String identity) {
+        if (identity == null) {
+            throw new IllegalArgumentException("the secured broker " + broker + " needs the client's identity");
+        }
+        java.nio.file.Path dir = ClientCredentials.configuredFolder().orElseThrow(() -> new IllegalArgumentException(
+                "the secured broker " + broker + " needs credentials: --credentials DIR, or " + ClientCredentials.ENVIRONMENT
+                        + "=DIR (the folder ./triad broker made)"));
+        return ClientCredentials.load(dir, identity);
     }
 
     private static String reason(MqttException e) {
@@ -194,18 +228,7 @@ public final class MqttLink implements AutoCloseable {
     private void deliver(String mqttTopic, byte[] payload) {
         received.incrementAndGet();
         try {
-            Topic.Address a = Topic.parse(mqttTopic)
-                    .orElseThrow(() -> new VdaMessageException("not a VDA 5050 topic"));
-            if (!a.major().equals(Header.MAJOR)) {
-                throw new VdaMessageException("major version " + a.major() + " in the topic; Triad speaks " + Header.VERSION);
-            }
-            JsonNode json = VdaJson.parse(payload);
-            JsonNode version = json.get("version");
-            if (version != null && version.isTextual() && Header.majorOf(version.asText()) != Header.majorOf(Header.VERSION)) {
-                throw new VdaMessageException("speaks VDA 5050 " + version.asText() + "; Triad speaks " + Header.VERSION);
-            }
-            MessageSchemas.get().check(a.topic(), json);
-            Received r = new Received(mqttTopic, a, json);
+            Received r = Inbound.read(mqttTopic, payload);
             for (Map.Entry<String, Consumer<Received>> h : handlers.entrySet()) {
                 if (matches(h.getKey(), mqttTopic)) {
                     h.getValue().accept(r);

@@ -104,7 +104,7 @@ class MqttLinkTest {
         assertFalse(e.getMessage().contains("\n"));
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
                 () -> MqttLink.connect("localhost:1883", "nobody", null, line -> { }, 10, 2));
-        assertEquals("not a broker address: 'localhost:1883' (expected tcp://HOST:PORT)", bad.getMessage());
+        assertEquals("not a broker address: 'localhost:1883' (expected ssl://HOST:PORT or tcp://HOST:PORT)", bad.getMessage());
     }
 
     @Test

@@ -155,7 +155,7 @@ public final class SimulatedAgv implements AutoCloseable {
     public SimulatedAgv start() {
         Connection will = new Connection(0, HeaderIds.now(), Header.VERSION, MasterControl.TRIAD, serial,
                 ConnectionState.CONNECTIONBROKEN);
-        link = MqttLink.connect(broker, "triad-agv-" + serial, new MqttLink.Will(topic(Topic.CONNECTION), will), log, 5, 5);
+        link = MqttLink.connect(broker, serial, "triad-agv-" + serial, new MqttLink.Will(topic(Topic.CONNECTION), will), log, 5, 5);
         link.subscribe(topic(Topic.ORDER), inbox::add);
         link.subscribe(topic(Topic.INSTANT_ACTIONS), inbox::add);
         link.onReconnect(this::announce);

@@ -1,0 +1,231 @@
+package org.triad.vda5050.security;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.BooleanSupplier;
+
+import javax.net.ssl.SSLContext;
+import javax.net.ssl.SSLSocketFactory;
+
+import org.eclipse.paho.client.mqttv3.MqttClient;
+import org.eclipse.paho.client.mqttv3.MqttConnectOptions;
+import org.eclipse.paho.client.mqttv3.MqttException;
+import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.triad.vda5050.broker.MosquittoBroker;
+import org.triad.vda5050.mqtt.BrokerUnreachableException;
+import org.triad.vda5050.mqtt.MqttLink;
+import org.triad.vda5050.mqtt.Received;
+import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Connection;
+import org.triad.vda5050.protocol.Header;
+import org.triad.vda5050.protocol.HeaderIds;
+import org.triad.vda5050.protocol.InstantActions;
+import org.triad.vda5050.protocol.Messages;
+import org.triad.vda5050.protocol.Messages.ConnectionState;
+import org.triad.vda5050.protocol.Order;
+import org.triad.vda5050.protocol.Topic;
+import org.triad.vda5050.protocol.VdaJson;
+
+/**
+ * A secured Mosquitto (TLS, client certificates, passwords, ACL) made from {@link BrokerCredentials}, attacked
+ * the ways the open broker fell to: nobody without credentials gets in, and a robot with credentials can
+ * neither command another robot nor speak for it.
+ */
+class SecuredBrokerTest {
+    private static final String M = "triad";
+    private static Path root;
+    private static BrokerCredentials credentials;
+    private static MosquittoBroker broker;
+
+    @BeforeAll
+    static void start() throws Exception {
+        root = Files.createTempDirectory("triad-secured-broker");
+        credentials = BrokerCredentials.ensure(root.resolve("credentials"), M, List.of("courier-1", "courier-2"));
+        broker = MosquittoBroker.startSecured(root.resolve("broker"), MosquittoBroker.freePort(), credentials);
+        System.setProperty(ClientCredentials.PROPERTY, credentials.dir().toString());
+    }
+
+    @AfterAll
+    static void stop() {
+        System.clearProperty(ClientCredentials.PROPERTY);
+        broker.close();
+    }
+
+    @Test
+    void theFolderIsMadeOnceAndKeepsWhatExists() throws Exception {
+        assertEquals(List.of("courier-1", "courier-2", "master"), credentials.identities());
+        String caBefore = Files.readString(credentials.caCertificate());
+        String pwBefore = Files.readString(root.resolve("credentials/clients/courier-1.password"));
+        BrokerCredentials again = BrokerCredentials.ensure(root.resolve("credentials"), M, List.of("courier-1", "courier-3"));
+        assertEquals(List.of("courier-3"), again.made());
+        assertEquals(caBefore, Files.readString(again.caCertificate()));
+        assertEquals(pwBefore, Files.readString(root.resolve("credentials/clients/courier-1.password")));
+        String passwd = Files.readString(again.passwordFile());
+        assertTrue(passwd.contains("courier-3:$"), "hashed: " + passwd);
+        assertTrue(!passwd.contains(pwBefore.trim()), "no password in plain text in " + again.passwordFile());
+        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(root.resolve("credentials/ca.key"))));
+        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(again.passwordFile())));
+        assertEquals("rwx------", PosixFilePermissions.toString(Files.getPosixFilePermissions(again.dir())));
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
+                () -> BrokerCredentials.ensure(root.resolve("credentials"), M, List.of("a/b")));
+        assertTrue(bad.getMessage().contains("not 'a/b'"), bad.getMessage());
+    }
+
+    @Test
+    void nobodyWithoutCredentialsGetsIn() throws Exception {
+        String port = Integer.toString(broker.port());
+        // plain TCP to the TLS port
+        assertThrows(MqttException.class, () -> attacker("tcp://127.0.0.1:" + port, null, null, null));
+        // TLS trusting the CA, no client certificate, anonymous
+        assertThrows(MqttException.class, () -> attacker("ssl://127.0.0.1:" + port, trustOnly(), null, null));
+        // a robot's certificate, but anonymous
+        assertThrows(MqttException.class, () -> attacker("ssl://127.0.0.1:" + port, credentials.client("courier-2").socketFactory(), null, null));
+        // a robot's certificate and another identity's name with a guessed password
+        MqttException wrong = assertThrows(MqttException.class,
+                () -> attacker("ssl://127.0.0.1:" + port, credentials.client("courier-2").socketFactory(), "master", "guess"));
+        assertNotEquals(0, wrong.getReasonCode());
+        // the library's own connect: a broker that refuses says so, naming the identity
+        System.setProperty(ClientCredentials.PROPERTY, root.resolve("nothing-here").toString());
+        try {
+            IllegalArgumentException none = assertThrows(IllegalArgumentException.class,
+                    () -> MqttLink.connect(broker.url(), "courier-1", "c", null, line -> { }, 5, 5));
+            assertTrue(none.getMessage().startsWith("no credentials for 'courier-1' in "), none.getMessage());
+        } finally {
+            System.setProperty(ClientCredentials.PROPERTY, credentials.dir().toString());
+        }
+        IllegalArgumentException noIdentity = assertThrows(IllegalArgumentException.class,
+                () -> MqttLink.connect(broker.url(), "c", null, line -> { }, 5, 5));
+        assertTrue(noIdentity.getMessage().contains("needs the client's identity"), noIdentity.getMessage());
+    }
+
+    @Test
+    void aRobotCannotCommandOrSpeakForAnother() throws Exception {
+        List<Received> robotGot = new CopyOnWriteArrayList<>();
+        List<Received> masterGot = new CopyOnWriteArrayList<>();
+        List<Received> spyGot = new CopyOnWriteArrayList<>();
+        try (MqttLink robot = MqttLink.connect(broker.url(), "courier-1", "triad-agv-courier-1",
+                new MqttLink.Will(Topic.CONNECTION.of(M, "courier-1"), connection("courier-1", ConnectionState.CONNECTIONBROKEN)), line -> { }, 5, 5);
+                MqttLink master = MqttLink.connect(broker.url(), BrokerCredentials.MASTER, "triad-master-test", null, line -> { }, 5, 5);
+                MqttLink other = MqttLink.connect(broker.url(), "courier-2", "triad-agv-courier-2", null, line -> { }, 5, 5)) {
+            robot.subscribe(Topic.ORDER.of(M, "courier-1"), robotGot::add);
+            robot.subscribe(Topic.INSTANT_ACTIONS.of(M, "courier-1"), robotGot::add);
+            master.subscribe(Topic.CONNECTION.ofAll(), masterGot::add);
+            master.subscribe(Topic.STATE.ofAll(), masterGot::add);
+            // courier-2 listens in on courier-1's orders (denied: it receives nothing)
+            other.subscribe(Topic.ORDER.of(M, "courier-1"), spyGot::add);
+
+            // courier-2, authenticated, attacks courier-1 (each publication is acknowledged and dropped)
+            other.publish(Topic.ORDER.of(M, "courier-1"), order("courier-1", "forged"), false);
+            other.publish(Topic.INSTANT_ACTIONS.of(M, "courier-1"), startPause("courier-1"), false);
+            other.publish(Topic.CONNECTION.of(M, "courier-1"), connection("courier-1", ConnectionState.CONNECTIONBROKEN), true);
+            other.publish(Topic.STATE.of(M, "courier-1"), state("courier-1", Integer.MAX_VALUE, "forged"), false);
+            // a robot may not command itself nor itself pose as master control
+            other.publish(Topic.ORDER.of(M, "courier-2"), order("courier-2", "self"), false);
+
+            // then the legitimate messages, on the same broker: they arrive, and nothing before them did
+            master.publish(Topic.ORDER.of(M, "courier-1"), order("courier-1", "real"), false);
+            robot.publish(Topic.STATE.of(M, "courier-1"), state("courier-1", 1, "real"), false);
+            await(() -> robotGot.size() >= 1 && masterGot.stream().anyMatch(r -> r.address().topic() == Topic.STATE));
+            assertEquals(1, robotGot.size(), robotGot.toString());
+            assertEquals("real", robotGot.get(0).as(Order.class).orderId());
+            List<Received> states = masterGot.stream().filter(r -> r.address().topic() == Topic.STATE).toList();
+            assertEquals(1, states.size(), states.toString());
+            assertEquals("real", states.get(0).as(AgvState.class).orderId());
+            assertTrue(masterGot.stream().noneMatch(r -> r.address().topic() == Topic.CONNECTION), masterGot.toString());
+            assertEquals(List.of(), spyGot);
+        }
+        // no forged retained CONNECTIONBROKEN waits for the next master control either
+        List<Received> later = new CopyOnWriteArrayList<>();
+        try (MqttLink master = MqttLink.connect(broker.url(), BrokerCredentials.MASTER, "triad-master-later", null, line -> { }, 5, 5);
+                MqttLink robot = MqttLink.connect(broker.url(), "courier-1", "triad-agv-courier-1b", null, line -> { }, 5, 5)) {
+            master.subscribe(Topic.CONNECTION.ofAll(), later::add);
+            robot.publish(Topic.CONNECTION.of(M, "courier-1"), connection("courier-1", ConnectionState.ONLINE), true);
+            await(() -> !later.isEmpty());
+            assertEquals(List.of(ConnectionState.ONLINE), later.stream().map(r -> r.as(Connection.class).connectionState()).toList());
+        }
+    }
+
+    @Test
+    void anUnauthenticatedClientSeesARefusalNamingIt() {
+        System.setProperty(ClientCredentials.PROPERTY, root.resolve("credentials").toString());
+        BrokerUnreachableException e = assertThrows(BrokerUnreachableException.class,
+                () -> MqttLink.connect("ssl://127.0.0.1:" + MosquittoBroker.freePort(), "courier-1", "x", null, line -> { }, 5, 2));
+        assertTrue(e.getMessage().startsWith("no MQTT broker at 127.0.0.1:"), e.getMessage());
+    }
+
+    private static void attacker(String url, SSLSocketFactory tls, String user, String password) throws MqttException {
+        MqttClient c = new MqttClient(url, "attacker-" + System.nanoTime(), new MemoryPersistence());
+        try {
+            MqttConnectOptions o = new MqttConnectOptions();
+            o.setConnectionTimeout(5);
+            if (tls != null) {
+                o.setSocketFactory(tls);
+            }
+            if (user != null) {
+                o.setUserName(user);
+                o.setPassword(password.toCharArray());
+            }
+            c.connect(o);
+            // connected: it should not have been; show what it could do
+            c.publish(Topic.ORDER.of(M, "courier-1"), VdaJson.write(VdaJson.tree(order("courier-1", "attack"))), 1, false);
+            c.disconnect();
+        } finally {
+            c.close(true);
+        }
+    }
+
+    private static SSLSocketFactory trustOnly() throws Exception {
+        var trust = java.security.KeyStore.getInstance("PKCS12");
+        trust.load(null, null);
+        trust.setCertificateEntry("ca", Certificates.readCertificate(credentials.caCertificate()));
+        var tmf = javax.net.ssl.TrustManagerFactory.getInstance(javax.net.ssl.TrustManagerFactory.getDefaultAlgorithm());
+        tmf.init(trust);
+        SSLContext tls = SSLContext.getInstance("TLS");
+        tls.init(null, tmf.getTrustManagers(), null);
+        return tls.getSocketFactory();
+    }
+
+    static Connection connection(String serial, ConnectionState s) {
+        return new Connection(0, HeaderIds.now(), Header.VERSION, M, serial, s);
+    }
+
+    static Order order(String serial, String orderId) {
+        return new Order(1, HeaderIds.now(), Header.VERSION, M, serial, orderId, 0, null,
+                List.of(new Messages.Node("lobby", 0, null, true, null, List.of()), new Messages.Node("c4", 2, null, true, null, List.of())),
+                List.of(new Messages.Edge("lobby-c4", 1, null, true, "lobby", "c4", List.of())));
+    }
+
+    static InstantActions startPause(String serial) {
+        return new InstantActions(1, HeaderIds.now(), Header.VERSION, M, serial,
+                List.of(new Messages.Action("startPause", "pause-1", null, Messages.BlockingType.HARD, null)));
+    }
+
+    static AgvState state(String serial, int headerId, String orderId) {
+        return new AgvState(headerId, HeaderIds.now(), Header.VERSION, M, serial, orderId, 0, null, "lobby", 0, List.of(), List.of(), null,
+                null, null, false, null, null, null, List.of(), new Messages.BatteryState(80, false), "AUTOMATIC", List.of(), null,
+                new Messages.SafetyState("NONE", false));
+    }
+
+    private static void await(BooleanSupplier c) throws InterruptedException {
+        for (int i = 0; i < 400 && !c.getAsBoolean(); i++) {
+            Thread.sleep(25);
+        }
+    }
+
+    @SuppressWarnings("unused")
+    private static byte[] utf8(String s) {
+        return s.getBytes(StandardCharsets.UTF_8);
+    }
+}
