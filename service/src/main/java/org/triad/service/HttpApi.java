@@ -123,6 +123,7 @@ final class HttpApi {
             ctx.json(service.setOnline(ctx.pathParam("name"), true));
         });
         app.get("/api/requests", ctx -> ctx.json(service.requests("true".equals(ctx.queryParam("all")))));
+        app.get("/api/health", ctx -> ctx.json(service.health()));
         app.sse("/api/events", client -> {
             client.keepAlive();
             Consumer<LiveEvent> listener = e -> {
