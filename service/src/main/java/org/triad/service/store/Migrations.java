@@ -43,7 +43,7 @@ public final class Migrations {
     static String fromH2(EmbeddedFile f, Database db) {
         Path h2 = f.legacyH2();
         String base = h2.toString().substring(0, h2.toString().length() - ".mv.db".length());
-        Path partial = f.file().resolveSibling(f.file().getFileName() + ".migrating");
+        Path partial = sibling(f.file(), ".migrating.db");
         try {
             Files.deleteIfExists(partial);
             Database target = Database.embedded(partial);
@@ -71,7 +71,7 @@ public final class Migrations {
                     }
 
                     @Override
-                    public void forEachRow(String table, List<String> columns, TableCopy.RowSink sink) throws SQLException {
+                    public int forEachRow(String table, List<String> columns, TableCopy.RowSink sink) throws SQLException {
                         try (Statement s = from.createStatement(); ResultSet r = s.executeQuery("SELECT " + String.join(", ", columns) + " FROM " + table
                                 + (columns.stream().anyMatch(c -> c.equalsIgnoreCase("id")) ? " ORDER BY id" : ""))) {
                             while (r.next()) {
@@ -82,6 +82,7 @@ public final class Migrations {
                                 sink.accept(row);
                             }
                         }
+                        return 0;
                     }
                 });
             }
@@ -114,7 +115,7 @@ public final class Migrations {
             throw ServiceError.startup("--recover: there is no database " + f.file());
         }
         f.prepare();
-        Path fresh = f.file().resolveSibling(f.file().getFileName() + ".recovering");
+        Path fresh = sibling(f.file(), ".recovering.db");
         try {
             Files.deleteIfExists(fresh);
             Database target = Database.embedded(fresh);
@@ -174,13 +175,14 @@ public final class Migrations {
         }
 
         @Override
-        public void forEachRow(String table, List<String> columns, TableCopy.RowSink sink) throws SQLException {
+        public int forEachRow(String table, List<String> columns, TableCopy.RowSink sink) throws SQLException {
             String select = "SELECT rowid, " + String.join(", ", columns) + " FROM " + table;
             long next = Long.MIN_VALUE;
+            int skipped = 0;
             while (true) {
                 long last = scan(select + " WHERE rowid >= ? ORDER BY rowid", next, columns.size(), sink);
                 if (last == Long.MAX_VALUE) {
-                    return;
+                    return skipped;
                 }
                 // the scan broke after rowid 'last': probe the rowids after it
                 long probe = last + 1;
@@ -201,8 +203,11 @@ public final class Migrations {
                     }
                 }
                 if (!found) {
-                    return;
+                    // rowids run on without gaps (rows are never deleted): at least the row after the last read one is lost
+                    return skipped + 1;
                 }
+                // the service never deletes rows, so every rowid between two readable ones was a row
+                skipped += (int) (probe - last - 1);
                 next = probe;
             }
         }
@@ -228,6 +233,12 @@ public final class Migrations {
                 return last;
             }
         }
+    }
+
+    /** {@code NAME.db} -> {@code NAME<ending>}, a name that {@link EmbeddedFile#of} keeps as it is. */
+    private static Path sibling(Path file, String ending) {
+        String name = file.getFileName().toString();
+        return file.resolveSibling(name.substring(0, name.length() - ".db".length()) + ending);
     }
 
     static String firstLine(Throwable e) {

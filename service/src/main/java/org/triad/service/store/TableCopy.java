@@ -37,7 +37,8 @@ final class TableCopy {
         /** The table's columns in the source, any case. */
         List<String> columns(String table) throws SQLException;
 
-        void forEachRow(String table, List<String> columns, RowSink sink) throws SQLException;
+        /** Returns how many rows it had to skip because they could not be read. */
+        int forEachRow(String table, List<String> columns, RowSink sink) throws SQLException;
     }
 
     interface RowSink {
@@ -50,6 +51,10 @@ final class TableCopy {
     static Result copy(Connection target, Map<String, String> sourceTables, RowSource source) throws SQLException {
         Map<String, int[]> counts = new LinkedHashMap<>();
         boolean auto = target.getAutoCommit();
+        // a salvage may keep events of a task row that was unreadable: copy what there is, references or not
+        try (var s = target.createStatement()) {
+            s.execute("PRAGMA foreign_keys=OFF");
+        }
         target.setAutoCommit(false);
         try {
             for (String table : tables(target)) {
@@ -62,7 +67,7 @@ final class TableCopy {
                 int[] n = new int[2];
                 String sql = "INSERT INTO " + table + "(" + String.join(", ", columns) + ") VALUES (" + "?, ".repeat(columns.size() - 1) + "?)";
                 try (PreparedStatement insert = target.prepareStatement(sql)) {
-                    source.forEachRow(sourceTable, columns, row -> {
+                    n[1] = source.forEachRow(sourceTable, columns, row -> {
                         for (int i = 0; i < row.length; i++) {
                             Object v = row[i];
                             if (v instanceof OffsetDateTime o) {
