@@ -71,6 +71,10 @@ public final class ServeCommand implements Callable<Integer> {
 		TriadService service;
 		String database = db != null ? db : dir.resolve(TriadService.DEFAULT_DB).toString();
 		try {
+			if (recover && org.triad.service.store.Database.of(database).shared()) {
+				err.println("triad serve: --recover salvages the embedded database file; a PostgreSQL server has its own tools (pg_amcheck, pg_dump)");
+				return 2;
+			}
 			if (recover) {
 				out.println("triad serve: " + org.triad.service.store.Migrations.salvage(Path.of(database)));
 				out.flush();

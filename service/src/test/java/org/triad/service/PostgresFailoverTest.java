@@ -52,6 +52,25 @@ class PostgresFailoverTest {
         }
     }
 
+    @Test
+    void whenTheServerCrashesAndComesBackTheServiceHealsAndTheRunningTaskCompletesOnce() throws Exception {
+        try (PostgresServer pg = PostgresServer.start(); ServiceProcesses processes = new ServiceProcesses()) {
+            ServiceProcesses.Running service = processes.startOrFail(pg.url(), "dry:1,state=Morning,delay=300");
+            long patrol = processes.submit(service.url(), "Patrol", "{\"a\": \"ward2\", \"b\": \"storage\", \"c\": \"ward1\"}").body().get("id").asLong();
+            await(processes, service, patrol, t -> kinds(t).contains("action_succeeded"), "the patrol is under way");
+
+            pg.crashAndRestart(2000);
+            JsonNode done = await(processes, service, patrol, t -> t.get("state").asText().equals("completed"), "the patrol completes after the outage");
+            assertEquals(1, kinds(done).stream().filter("task_completed"::equals).count(), "completed once: " + kinds(done));
+            ServiceFixture.Response r = processes.submit(service.url(), "GoTo", "{\"dst\": \"xray\"}");
+            assertEquals(201, r.status(), "submissions work again without a restart: " + r.body());
+            JsonNode health = processes.get(service.url(), "/api/health").body();
+            assertTrue(health.get("ok").asBoolean() && health.get("dispatching").asBoolean(), health.toString());
+            assertTrue(health.get("lease").get(0).asText().contains("took over dispatch; 1 task(s)"), health.toString());
+            assertTrue(health.get("lease").get(1).asText().contains("lost the dispatch lease"), health.toString());
+        }
+    }
+
     static List<String> kinds(JsonNode task) {
         List<String> out = new ArrayList<>();
         task.get("events").forEach(e -> out.add(e.get("kind").asText()));

@@ -49,6 +49,15 @@ final class PostgresServer implements AutoCloseable {
         return server;
     }
 
+    /** Stops the server as a crash would (every connection is cut) and starts it again after {@code downMillis}. */
+    void crashAndRestart(long downMillis) throws IOException, InterruptedException {
+        pg(List.of(bin.resolve("pg_ctl").toString(), "-D", data.toString(), "-m", "immediate", "-w", "stop"));
+        Thread.sleep(downMillis);
+        Path folder = data.getParent();
+        pg(List.of(bin.resolve("pg_ctl").toString(), "-D", data.toString(), "-w", "-t", "60", "-l", folder.resolve("log").toString(),
+                "-o", "-p " + port + " -h 127.0.0.1 -k " + folder + " -c fsync=on", "start"));
+    }
+
     /** {@code postgresql://triad@127.0.0.1:PORT/triad} */
     String url() {
         return "postgresql://triad@127.0.0.1:" + port + "/triad";
