@@ -567,21 +567,22 @@ public final class FleetService implements AutoCloseable {
                 // the instance that took the lease over owns the task now and has queued it again: write nothing
                 return;
             }
-            durably(() -> store.insertEvent(taskId, kind(status), lane.name(), status.toString(), now));
+            String[] event = { kind(status), status.toString() };
             if (status instanceof Status.TaskCompleted) {
-                durably(() -> store.updateTaskIf(taskId, TaskState.RUNNING, lane.name(), TaskState.COMPLETED, lane.name(), null, now));
+                durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.COMPLETED, lane.name(), null, null, now));
             } else if (status instanceof Status.TaskAborted a) {
                 if (stop != null && stop.startsWith("cancelled")) {
-                    durably(() -> store.updateTaskIf(taskId, TaskState.RUNNING, lane.name(), TaskState.CANCELLED, lane.name(), stop, now));
+                    durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.CANCELLED, lane.name(), stop, null, now));
                 } else if (stop != null) {
-                    durably(() -> store.insertEvent(taskId, "interrupted", lane.name(), "interrupted: " + stop + "; queued again", now));
-                    durably(() -> store.updateTaskIf(taskId, TaskState.RUNNING, lane.name(), TaskState.QUEUED, null, stop, now));
+                    String[] interrupted = { "interrupted", "interrupted: " + stop + "; queued again" };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, interrupted), TaskState.QUEUED, null, stop, null, now));
                 } else {
-                    durably(() -> {
-                        abort(taskId, lane.name(), a.goal().describe(), a.reason(), now);
-                        return null;
-                    });
+                    String[] request = { "remote_operation", "remote operation requested: " + a.reason() };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), a.reason(),
+                            new String[] { a.goal().describe(), a.reason() }, now));
                 }
+            } else {
+                durably(() -> store.insertEvent(taskId, event[0], lane.name(), event[1], now));
             }
         } catch (ServiceError e) {
             // the service stops, or this instance lost the lease: the task's row keeps its last state and is recovered

@@ -172,6 +172,37 @@ public final class TaskStore implements AutoCloseable {
         });
     }
 
+    /**
+     * A robot's last report on a task, in one transaction: its events, then the task's new state if it
+     * is still {@code running} on {@code robot}, and for {@code aborted} the remote-operation request.
+     * A crash before the commit leaves the task running (queued again at the next start, its events
+     * not written); after it, the task is finished: never both, so a task does not complete twice.
+     *
+     * @param events {@code [kind, text]} pairs
+     * @param request the remote-operation request's {@code [goal, reason]} when the task becomes aborted, else null
+     */
+    public boolean finishTask(long id, String robot, List<String[]> events, TaskState state, String newRobot, String reason, String[] request,
+            Instant now) {
+        return transaction(c -> {
+            for (String[] e : events) {
+                insertEvent(c, id, e[0], robot, e[1], now);
+            }
+            int changed;
+            try (PreparedStatement s = c.prepareStatement(
+                    "UPDATE task SET state = ?, robot = ?, preferred_robot = NULL, reason = ?, updated_at = ? WHERE id = ? AND state = ? AND robot = ?")) {
+                bind(s, state.name(), newRobot, reason, Timestamp.from(now), id, TaskState.RUNNING.name(), robot);
+                changed = s.executeUpdate();
+            }
+            if (request != null && changed == 1) {
+                try (PreparedStatement s = c.prepareStatement("INSERT INTO remote_request(task_id, robot, goal, reason, raised_at) VALUES (?, ?, ?, ?, ?)")) {
+                    bind(s, id, robot, request[0], request[1].length() > 4000 ? request[1].substring(0, 3997) + "..." : request[1], Timestamp.from(now));
+                    s.executeUpdate();
+                }
+            }
+            return changed == 1;
+        });
+    }
+
     public void updateTask(long id, TaskState state, String robot, String preferredRobot, String reason, Instant now) {
         update("UPDATE task SET state = ?, robot = ?, preferred_robot = ?, reason = ?, updated_at = ? WHERE id = ?", state.name(), robot, preferredRobot,
                 reason, Timestamp.from(now), id);
