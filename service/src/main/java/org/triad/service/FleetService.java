@@ -211,15 +211,24 @@ public final class FleetService implements AutoCloseable {
 
     public TaskView submit(JsonNode body) {
         TaskCall call = catalog.check(body);
-        Instant now = clock.instant();
-        TaskRow row;
+        // as precise as every database keeps it, so that the 201 and a later GET agree
+        Instant now = clock.instant().truncatedTo(java.time.temporal.ChronoUnit.MILLIS);
+        TaskStore.Submitted stored;
         synchronized (lock) {
-            row = store.insertTask(call.task(), call.args().toString(), now, "submitted: " + call.describe());
-            calls.put(row.id(), call);
-            queue.add(row.id());
+            stored = store.submitTask(call.task(), call.args().toString(), now, "submitted: " + call.describe());
+            calls.put(stored.task().id(), call);
+            queue.add(stored.task().id());
             lock.notifyAll();
         }
-        return publishTask(row.id(), true);
+        // the answer is built from what was written, without reading it back: one commit per submission
+        TaskView v = view(stored.task(), List.of(view(stored.event())));
+        if (!listeners.isEmpty()) {
+            Map<String, Object> data = new LinkedHashMap<>();
+            data.put("task", withoutEvents(v));
+            data.put("event", view(stored.event()));
+            publish(new LiveEvent("task", data));
+        }
+        return v;
     }
 
     public Optional<TaskView> task(long id) {
@@ -627,7 +636,10 @@ public final class FleetService implements AutoCloseable {
     }
 
     private TaskView view(TaskRow t, boolean withEvents) {
-        List<EventView> events = withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null;
+        return view(t, withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null);
+    }
+
+    private TaskView view(TaskRow t, List<EventView> events) {
         JsonNode args;
         try {
             args = JSON.readTree(t.args());

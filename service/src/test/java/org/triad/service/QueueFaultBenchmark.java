@@ -30,7 +30,7 @@ import com.fasterxml.jackson.databind.JsonNode;
  * (2) Fail-over on PostgreSQL: two instances, the dispatching one killed with a task in flight F times:
  * take-over time (kill to the other's {@code /api/health} saying it dispatches), median and max.
  * (3) Submissions/s and p99 on both, one process each, robots offline.
- * Arguments: {@code [tasks=500] [kills=20] [failovers=10] [submissions=2000]}.
+ * Arguments: {@code [tasks=500] [kills=20] [failovers=10] [submissions=2000]} (kills and failovers 0: only the last table).
  */
 public final class QueueFaultBenchmark {
     private static final String[] ROOMS = { "xray", "ward1", "ward2", "storage" };
@@ -46,14 +46,8 @@ public final class QueueFaultBenchmark {
         System.out.printf(Locale.ROOT, "queue fault benchmark: %d cores, Java %s, load average %.1f%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         Path dir = Files.createTempDirectory("triad-queue-faults");
-        try (PostgresServer pg = PostgresServer.start()) {
-            System.out.println();
-            System.out.printf(Locale.ROOT, "| %d tasks at full speed, %d SIGKILLs | acknowledged | lost | duplicated | stuck | failed starts | recovery median | recovery max |%n",
-                    tasks, kills);
-            System.out.println("|---|---|---|---|---|---|---|---|");
-            kills("embedded (SQLite, WAL, synchronous=FULL)", dir.resolve("kills").toString(), tasks, kills);
-            kills("PostgreSQL 1 instance", pg.url(), tasks, kills);
-            failover(pg, failovers);
+        if (kills > 0 || failovers > 0) {
+            faults(dir, tasks, kills, failovers);
         }
         try (PostgresServer pg = PostgresServer.start()) {
             System.out.println();
@@ -61,6 +55,22 @@ public final class QueueFaultBenchmark {
             System.out.println("|---|---|---|---|");
             throughput("embedded (SQLite, WAL, synchronous=FULL)", dir.resolve("throughput").toString(), submissions);
             throughput("PostgreSQL (synchronous_commit=on)", pg.url(), submissions);
+        }
+    }
+
+    private static void faults(Path dir, int tasks, int kills, int failovers) throws Exception {
+        try (PostgresServer pg = PostgresServer.start()) {
+            System.out.println();
+            System.out.printf(Locale.ROOT, "| %d tasks at full speed, %d SIGKILLs | acknowledged | lost | duplicated | stuck | failed starts | recovery median | recovery max |%n",
+                    tasks, kills);
+            System.out.println("|---|---|---|---|---|---|---|---|");
+            if (kills > 0) {
+                kills("embedded (SQLite, WAL, synchronous=FULL)", dir.resolve("kills").toString(), tasks, kills);
+                kills("PostgreSQL 1 instance", pg.url(), tasks, kills);
+            }
+            if (failovers > 0) {
+                failover(pg, failovers);
+            }
         }
     }
 

@@ -145,8 +145,17 @@ public final class TaskStore implements AutoCloseable {
         });
     }
 
+    /** A stored submission: the task's row and its first event. */
+    public record Submitted(TaskRow task, EventRow event) {
+    }
+
     /** Stores a submitted task with its first event ({@code submitted}) in one transaction: both or neither. */
     public TaskRow insertTask(String task, String argsJson, Instant now, String submittedText) {
+        return submitTask(task, argsJson, now, submittedText).task();
+    }
+
+    /** As {@link #insertTask(String, String, Instant, String)}, with the event. */
+    public Submitted submitTask(String task, String argsJson, Instant now, String submittedText) {
         return transaction(c -> {
             long id;
             try (PreparedStatement s = c.prepareStatement(
@@ -155,8 +164,8 @@ public final class TaskStore implements AutoCloseable {
                 s.executeUpdate();
                 id = generatedKey(s);
             }
-            insertEvent(c, id, "submitted", null, submittedText, now);
-            return new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now);
+            EventRow event = insertEvent(c, id, "submitted", null, submittedText, now);
+            return new Submitted(new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now), event);
         });
     }
 
