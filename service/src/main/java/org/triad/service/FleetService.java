@@ -210,12 +210,32 @@ public final class FleetService implements AutoCloseable {
     // ---- staff --------------------------------------------------------------------------------
 
     public TaskView submit(JsonNode body) {
+        return submit(body, null).task();
+    }
+
+    /** A submission's answer: the task, and whether it was stored now (201) or before under the same key (200). */
+    public record Submission(TaskView task, boolean created) {
+    }
+
+    /**
+     * Stores and queues a task. With an idempotency {@code key} a repeated submission (a client that
+     * lost the answer, e.g. to a crash after the commit) gets the task stored before, if it is the same task.
+     */
+    public Submission submit(JsonNode body, String key) {
         TaskCall call = catalog.check(body);
         // as precise as every database keeps it, so that the 201 and a later GET agree
         Instant now = clock.instant().truncatedTo(java.time.temporal.ChronoUnit.MILLIS);
         TaskStore.Submitted stored;
         synchronized (lock) {
-            stored = store.submitTask(call.task(), call.args().toString(), now, "submitted: " + call.describe());
+            stored = store.submitTask(call.task(), call.args().toString(), now, "submitted: " + call.describe(), key);
+            if (!stored.created()) {
+                TaskRow t = stored.task();
+                if (!t.task().equals(call.task()) || !t.args().equals(call.args().toString())) {
+                    throw new ServiceError(422, "idempotency-key-reused", "the Idempotency-Key '" + key + "' was used for task " + t.id() + ", "
+                            + callText(t) + "; a new task needs a new key");
+                }
+                return new Submission(view(t, true), false);
+            }
             calls.put(stored.task().id(), call);
             queue.add(stored.task().id());
             lock.notifyAll();
@@ -228,7 +248,7 @@ public final class FleetService implements AutoCloseable {
             data.put("event", view(stored.event()));
             publish(new LiveEvent("task", data));
         }
-        return v;
+        return new Submission(v, true);
     }
 
     public Optional<TaskView> task(long id) {

@@ -67,6 +67,25 @@ class CrashSafetyTest {
         assertTrue(acknowledged.size() >= 50, "tasks acknowledged: " + acknowledged.size());
     }
 
+    @Test
+    void aSubmissionRepeatedWithItsIdempotencyKeyAfterAKillFindsTheStoredTask() {
+        String db = dir.resolve("keyed").toString();
+        try (ServiceProcesses processes = new ServiceProcesses()) {
+            ServiceProcesses.Running first = processes.startOrFail(db, "dry:1,state=Morning");
+            ServiceFixture.Response stored = processes.submit(first.url(), "GoTo", "{\"dst\": \"xray\"}", "ward-3-request-17");
+            assertEquals(201, stored.status(), String.valueOf(stored.body()));
+            first.kill();
+            ServiceProcesses.Running second = processes.startOrFail(db, "dry:1,state=Morning");
+            ServiceFixture.Response again = processes.submit(second.url(), "GoTo", "{\"dst\": \"xray\"}", "ward-3-request-17");
+            assertEquals(200, again.status(), "the client lost the first answer and asks again: " + again.body());
+            assertEquals(stored.body().get("id").asLong(), again.body().get("id").asLong());
+            assertEquals(1, processes.get(second.url(), "/api/tasks").body().size(), "one task, not two");
+            ServiceFixture.Response other = processes.submit(second.url(), "GoTo", "{\"dst\": \"ward1\"}", "ward-3-request-17");
+            assertEquals(422, other.status(), String.valueOf(other.body()));
+            assertEquals("idempotency-key-reused", other.body().get("error").asText());
+        }
+    }
+
     private static boolean submit(ServiceProcesses processes, ServiceProcesses.Running service, int n, Map<Long, String> acknowledged) {
         String room = ROOMS[n % ROOMS.length];
         ServiceFixture.Response r = processes.submit(service.url(), "GoTo", "{\"dst\": \"" + room + "\"}");

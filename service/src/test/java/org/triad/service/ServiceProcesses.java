@@ -100,8 +100,17 @@ final class ServiceProcesses implements AutoCloseable {
 
     /** POST /api/tasks; the status and body, or status -1 when the process did not answer. */
     ServiceFixture.Response submit(String url, String task, String argsJson) {
-        return send(HttpRequest.newBuilder(URI.create(url + "/api/tasks")).header("Content-Type", "application/json")
-                .POST(HttpRequest.BodyPublishers.ofString("{\"task\": \"" + task + "\", \"args\": " + argsJson + "}")));
+        return submit(url, task, argsJson, null);
+    }
+
+    /** With an {@code Idempotency-Key} header (null: none). */
+    ServiceFixture.Response submit(String url, String task, String argsJson, String key) {
+        HttpRequest.Builder b = HttpRequest.newBuilder(URI.create(url + "/api/tasks")).header("Content-Type", "application/json")
+                .POST(HttpRequest.BodyPublishers.ofString("{\"task\": \"" + task + "\", \"args\": " + argsJson + "}"));
+        if (key != null) {
+            b.header("Idempotency-Key", key);
+        }
+        return send(b);
     }
 
     ServiceFixture.Response get(String url, String path) {

@@ -145,8 +145,8 @@ public final class TaskStore implements AutoCloseable {
         });
     }
 
-    /** A stored submission: the task's row and its first event. */
-    public record Submitted(TaskRow task, EventRow event) {
+    /** A stored submission: the task's row and its first event; {@code created} false when the key named a task stored before (event null). */
+    public record Submitted(TaskRow task, EventRow event, boolean created) {
     }
 
     /** Stores a submitted task with its first event ({@code submitted}) in one transaction: both or neither. */
@@ -156,16 +156,30 @@ public final class TaskStore implements AutoCloseable {
 
     /** As {@link #insertTask(String, String, Instant, String)}, with the event. */
     public Submitted submitTask(String task, String argsJson, Instant now, String submittedText) {
+        return submitTask(task, argsJson, now, submittedText, null);
+    }
+
+    /**
+     * Stores a submission under the client's idempotency {@code key} (null: none); a key stored before
+     * returns that task instead ({@code created} false), whatever its state.
+     */
+    public Submitted submitTask(String task, String argsJson, Instant now, String submittedText, String key) {
+        if (key != null) {
+            List<TaskRow> before = tasks("SELECT * FROM task WHERE submission_key = ?", key);
+            if (!before.isEmpty()) {
+                return new Submitted(before.get(0), null, false);
+            }
+        }
         return transaction(c -> {
             long id;
             try (PreparedStatement s = c.prepareStatement(
-                    "INSERT INTO task(name, args, state, submitted_at, updated_at) VALUES (?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
-                bind(s, task, argsJson, TaskState.QUEUED.name(), Timestamp.from(now), Timestamp.from(now));
+                    "INSERT INTO task(name, args, state, submitted_at, updated_at, submission_key) VALUES (?, ?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
+                bind(s, task, argsJson, TaskState.QUEUED.name(), Timestamp.from(now), Timestamp.from(now), key);
                 s.executeUpdate();
                 id = generatedKey(s);
             }
             EventRow event = insertEvent(c, id, "submitted", null, submittedText, now);
-            return new Submitted(new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now), event);
+            return new Submitted(new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now), event, true);
         });
     }
 
