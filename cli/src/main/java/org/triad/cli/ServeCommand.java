@@ -40,8 +40,12 @@ public final class ServeCommand implements Callable<Integer> {
 	@Option(names = "--host", paramLabel = "ADDRESS", description = "the address to listen on (default 127.0.0.1: this machine only)")
 	private String host = "127.0.0.1";
 
-	@Option(names = "--db", paramLabel = "FILE", description = "the task database (default DIR/" + TriadService.DEFAULT_DB + ".mv.db)")
-	private Path db;
+	@Option(names = "--db", paramLabel = "FILE|URL", description = { "the task database: a file (default DIR/" + TriadService.DEFAULT_DB + ".db, SQLite),",
+			"or postgresql://USER:PASSWORD@HOST:PORT/DB, which several instances can share (one dispatches, the others take over)" })
+	private String db;
+
+	@Option(names = "--recover", description = "copy every readable row of a damaged database file into a new one (the damaged file is kept), then start")
+	private boolean recover;
 
 	@Option(names = "--config", paramLabel = "FILE",
 			description = "a properties file with submit-token= and operator-token= (else $TRIAD_SUBMIT_TOKEN/$TRIAD_OPERATOR_TOKEN, else generated once)")
@@ -79,13 +83,22 @@ public final class ServeCommand implements Callable<Integer> {
 		}
 		Path models = Files.isDirectory(dir.resolve("src/main/models")) ? dir.resolve("src/main/models") : dir;
 		TriadService service;
+		String database = db != null ? db : dir.resolve(TriadService.DEFAULT_DB).toString();
 		try {
-			service = TriadService.start(new TriadService.Options(models, robots, situation, db != null ? db : dir.resolve(TriadService.DEFAULT_DB), config,
-					host, port, environment()));
+			if (recover && org.triad.service.store.Database.of(database).shared()) {
+				err.println("triad serve: --recover salvages the embedded database file; a PostgreSQL server has its own tools (pg_amcheck, pg_dump)");
+				return 2;
+			}
+			if (recover) {
+				out.println("triad serve: " + org.triad.service.store.Migrations.salvage(Path.of(database)));
+				out.flush();
+			}
+			service = TriadService.start(new TriadService.Options(models, robots, situation, database, config, host, port, environment()));
 		} catch (ServiceError | java.io.UncheckedIOException e) {
 			err.println("triad serve: " + e.getMessage());
-			Path file = db != null ? db : dir.resolve(TriadService.DEFAULT_DB);
-			if (Files.exists(file) || Files.exists(file.resolveSibling(file.getFileName() + ".mv.db"))) {
+			boolean made = org.triad.service.store.Database.of(database).shared() || Files.exists(Path.of(database))
+					|| Files.exists(Path.of(database + ".db")) || Files.exists(Path.of(database + ".mv.db"));
+			if (made) {
 				// the database was made (tokens included) before the start failed: how to get in, whatever it holds
 				err.println("  access, whatever this start left: ./triad users " + dir + (db != null ? " --db " + db : "")
 						+ " add NAME --role staff|operator|admin (a named user's token), or list");

@@ -30,6 +30,8 @@ import org.triad.service.Views.TaskView;
 import org.triad.service.store.Records.EventRow;
 import org.triad.service.store.Records.RequestRow;
 import org.triad.service.store.Records.TaskRow;
+import org.triad.service.store.DispatchLease;
+import org.triad.service.store.StoreHealth;
 import org.triad.service.store.TaskStore;
 import org.triad.service.store.TaskState;
 
@@ -63,26 +65,67 @@ public final class FleetService implements AutoCloseable {
     private volatile boolean running = true;
     private volatile long dispatchNanos;
     private volatile long dispatches;
+    private final DispatchLease lease;
+    /** Whether this instance dispatches (holds the lease); on the embedded database always. */
+    private volatile boolean dispatching;
+    /** Take-overs and losses of the dispatch lease, newest first, for the operator page. */
+    private final List<String> leaseHistory = new CopyOnWriteArrayList<>();
+    private long lastSync;
 
     public FleetService(TaskCatalog catalog, TaskStore store, List<FleetRobot> robots, GoalSolver planner, Clock clock) {
+        this(catalog, store, robots, planner, clock, DispatchLease.of(store.database()));
+    }
+
+    /**
+     * @param lease which instance dispatches: only the holder dispatches and re-queues running tasks
+     *              at take-over; every instance accepts and serves tasks
+     */
+    public FleetService(TaskCatalog catalog, TaskStore store, List<FleetRobot> robots, GoalSolver planner, Clock clock, DispatchLease lease) {
         this.catalog = catalog;
         this.store = store;
         this.estimator = planner;
         this.clock = clock;
+        this.lease = lease;
         GoalPlanner goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
         for (FleetRobot r : robots) {
             lanes.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
         }
-        recover();
+        if (lease.holds()) {
+            synchronized (lock) {
+                recover();
+                dispatching = true;
+            }
+            if (store.database().shared()) {
+                note("this instance dispatches (it took the lease at start)");
+            }
+        } else {
+            note("another instance dispatches; this one serves the API and takes over if that one stops");
+        }
         dispatcher = new Thread(this::dispatchLoop, "triad-dispatcher");
         dispatcher.setDaemon(true);
         dispatcher.start();
     }
 
-    /** Tasks that were running when the service stopped are interrupted and queued again; queued ones stay queued. */
-    private void recover() {
+    private void note(String what) {
+        leaseHistory.add(0, clock.instant() + " " + what);
+        while (leaseHistory.size() > 20) {
+            leaseHistory.remove(leaseHistory.size() - 1);
+        }
+        if (store.database().shared()) {
+            System.err.println("triad serve: " + what);
+        }
+    }
+
+    /**
+     * Tasks that were running when the service (or the instance that dispatched) stopped are
+     * interrupted and queued again; queued ones stay queued. Returns how many were interrupted.
+     */
+    private int recover() {
         Instant now = clock.instant();
-        for (TaskRow t : store.tasksInOrder(TaskState.RUNNING)) {
+        queue.clear();
+        preferred.clear();
+        List<TaskRow> interrupted = store.tasksInOrder(TaskState.RUNNING);
+        for (TaskRow t : interrupted) {
             store.insertEvent(t.id(), "interrupted", t.robot(), "interrupted: the service stopped while robot " + t.robot()
                     + " ran the task; queued again, to be re-planned from the robot's current state", now);
             store.updateTask(t.id(), TaskState.QUEUED, null, null, "interrupted by a service restart", now);
@@ -96,10 +139,53 @@ public final class FleetService implements AutoCloseable {
                     preferred.put(t.id(), t.preferredRobot());
                 }
             } catch (ServiceError e) {
+                if (e.code().equals("database-unavailable")) {
+                    throw e;
+                }
                 abort(t.id(), null, null, "the task no longer fits the models or the world: " + e.getMessage(), now);
             }
         }
+        lastSync = System.nanoTime();
+        return interrupted.size();
     }
+
+    /**
+     * Brings the queue in memory in line with the database: tasks queued through another instance or
+     * left out after a failed write join it, tasks finished elsewhere leave it, and a cancel asked of
+     * another instance stops the robot that runs the task here.
+     */
+    private void sync() {
+        Instant now = clock.instant();
+        java.util.Set<Long> queued = new java.util.HashSet<>();
+        for (TaskRow t : store.tasksInOrder(TaskState.QUEUED)) {
+            queued.add(t.id());
+            if (!queue.contains(t.id())) {
+                try {
+                    calls.computeIfAbsent(t.id(), id -> catalog.check(request(t)));
+                    queue.add(t.id());
+                    if (t.preferredRobot() != null) {
+                        preferred.put(t.id(), t.preferredRobot());
+                    }
+                } catch (ServiceError e) {
+                    if (e.code().equals("database-unavailable")) {
+                        throw e;
+                    }
+                    abort(t.id(), null, null, "the task no longer fits the models or the world: " + e.getMessage(), now);
+                }
+            }
+        }
+        queue.removeIf(id -> !queued.contains(id));
+        for (TaskRow t : store.tasksInOrder(TaskState.RUNNING)) {
+            RobotLane lane = t.robot() == null ? null : lanes.get(t.robot());
+            if (lane != null && t.reason() != null && t.reason().startsWith(CANCEL_REQUESTED) && lane.currentTask().orElse(-1L) == t.id()) {
+                lane.stop("cancelled by " + t.reason().substring(CANCEL_REQUESTED.length()));
+            }
+        }
+        lastSync = System.nanoTime();
+    }
+
+    private static final String CANCEL_REQUESTED = "cancel requested by ";
+    private static final String LEASE_LOST = "this service instance lost the dispatch lease (its database connection); another instance re-plans the task";
 
     private static JsonNode request(TaskRow t) {
         try {
@@ -124,17 +210,45 @@ public final class FleetService implements AutoCloseable {
     // ---- staff --------------------------------------------------------------------------------
 
     public TaskView submit(JsonNode body) {
+        return submit(body, null).task();
+    }
+
+    /** A submission's answer: the task, and whether it was stored now (201) or before under the same key (200). */
+    public record Submission(TaskView task, boolean created) {
+    }
+
+    /**
+     * Stores and queues a task. With an idempotency {@code key} a repeated submission (a client that
+     * lost the answer, e.g. to a crash after the commit) gets the task stored before, if it is the same task.
+     */
+    public Submission submit(JsonNode body, String key) {
         TaskCall call = catalog.check(body);
-        Instant now = clock.instant();
-        TaskRow row;
+        // as precise as every database keeps it, so that the 201 and a later GET agree
+        Instant now = clock.instant().truncatedTo(java.time.temporal.ChronoUnit.MILLIS);
+        TaskStore.Submitted stored;
         synchronized (lock) {
-            row = store.insertTask(call.task(), call.args().toString(), now);
-            store.insertEvent(row.id(), "submitted", null, "submitted: " + call.describe(), now);
-            calls.put(row.id(), call);
-            queue.add(row.id());
+            stored = store.submitTask(call.task(), call.args().toString(), now, "submitted: " + call.describe(), key);
+            if (!stored.created()) {
+                TaskRow t = stored.task();
+                if (!t.task().equals(call.task()) || !t.args().equals(call.args().toString())) {
+                    throw new ServiceError(422, "idempotency-key-reused", "the Idempotency-Key '" + key + "' was used for task " + t.id() + ", "
+                            + callText(t) + "; a new task needs a new key");
+                }
+                return new Submission(view(t, true), false);
+            }
+            calls.put(stored.task().id(), call);
+            queue.add(stored.task().id());
             lock.notifyAll();
         }
-        return publishTask(row.id(), true);
+        // the answer is built from what was written, without reading it back: one commit per submission
+        TaskView v = view(stored.task(), List.of(view(stored.event())));
+        if (!listeners.isEmpty()) {
+            Map<String, Object> data = new LinkedHashMap<>();
+            data.put("task", withoutEvents(v));
+            data.put("event", view(stored.event()));
+            publish(new LiveEvent("task", data));
+        }
+        return new Submission(v, true);
     }
 
     public Optional<TaskView> task(long id) {
@@ -161,8 +275,11 @@ public final class FleetService implements AutoCloseable {
                 case RUNNING -> {
                     RobotLane lane = lanes.get(t.robot());
                     store.insertEvent(id, "cancelling", t.robot(), "cancel requested by " + who + "; the robot stops at its next step", now);
-                    if (lane != null) {
+                    if (lane != null && lane.currentTask().orElse(-1L) == id) {
                         lane.stop("cancelled by " + who);
+                    } else {
+                        // the robot belongs to the instance that dispatches: it reads this at its next look at the database
+                        store.updateTaskIf(id, TaskState.RUNNING, t.robot(), TaskState.RUNNING, t.robot(), CANCEL_REQUESTED + who, now);
                     }
                 }
                 default -> throw new ServiceError(409, "task-finished", "task " + id + " is " + t.state().json() + "; only queued, running or aborted tasks can be cancelled");
@@ -291,31 +408,106 @@ public final class FleetService implements AutoCloseable {
     }
 
     private void dispatchLoop() {
+        Backoff backoff = new Backoff();
         while (running) {
             Choice choice;
-            synchronized (lock) {
-                choice = next();
-                if (choice == null) {
-                    try {
-                        lock.wait(500);
-                    } catch (InterruptedException e) {
-                        return;
-                    }
+            try {
+                if (!leaseHeld()) {
+                    sleepQuietly(DispatchLease.POLL_MILLIS);
                     continue;
                 }
+                synchronized (lock) {
+                    if (System.nanoTime() - lastSync > DispatchLease.POLL_MILLIS * 1_000_000L) {
+                        sync();
+                    }
+                    choice = next();
+                    if (choice == null) {
+                        backoff.reset();
+                        try {
+                            lock.wait(DispatchLease.POLL_MILLIS);
+                        } catch (InterruptedException e) {
+                            return;
+                        }
+                        continue;
+                    }
+                }
+            } catch (ServiceError e) {
+                // the database failed: everything stays in the database; try again after a pause
+                sleepQuietly(backoff.next());
+                continue;
             }
             long start = System.nanoTime();
             try {
                 dispatch(choice, start);
+                backoff.reset();
             } catch (ServiceError e) {
                 // the database failed: the task stays queued in the database and is tried again
-                sleepQuietly(500);
+                sleepQuietly(backoff.next());
             } catch (RuntimeException e) {
                 synchronized (lock) {
                     queue.remove(choice.task());
                     abort(choice.task(), null, null, "the service could not dispatch the task: " + e, clock.instant());
                 }
                 publishRequests();
+            }
+        }
+    }
+
+    /**
+     * Whether this instance dispatches now. Taking the lease over re-queues the tasks the previous
+     * holder ran; losing it stops this instance's robots, whose tasks the new holder re-queues.
+     */
+    private boolean leaseHeld() {
+        boolean holds = lease.holds();
+        if (holds && !dispatching) {
+            int interrupted;
+            synchronized (lock) {
+                interrupted = recover();
+                dispatching = true;
+            }
+            note("this instance took over dispatch; " + interrupted + " task(s) the previous one ran are queued again");
+        } else if (!holds && dispatching) {
+            dispatching = false;
+            synchronized (lock) {
+                queue.clear();
+                for (RobotLane l : lanes.values()) {
+                    l.stop(LEASE_LOST);
+                }
+            }
+            note("this instance lost the dispatch lease; its robots stop and another instance takes over");
+        }
+        return holds;
+    }
+
+    /** Pauses between attempts after a database failure: 250 ms, doubling to 5 s. */
+    private static final class Backoff {
+        private long next = 250;
+
+        long next() {
+            long now = next;
+            next = Math.min(5000, next * 2);
+            return now;
+        }
+
+        void reset() {
+            next = 250;
+        }
+    }
+
+    /**
+     * Runs a write of a robot's report until the database takes it (or the service stops): the robot
+     * waits meanwhile, and resumes when the full disk has room again or the connection is back.
+     */
+    private <T> T durably(java.util.function.Supplier<T> write) {
+        Backoff backoff = new Backoff();
+        while (true) {
+            try {
+                return write.get();
+            } catch (ServiceError e) {
+                if (!running || !dispatching || !e.code().equals("database-unavailable")) {
+                    throw e;
+                }
+                sleepQuietly(backoff.next());
             }
         }
     }
@@ -373,11 +565,11 @@ public final class FleetService implements AutoCloseable {
             if (!queue.contains(choice.task()) || !best.idle() || !best.online()) {
                 return;
             }
+            String text = "dispatched to " + best.name() + (first == null ? "" : "; first goal " + first.describe() + " from each robot's state: " + why);
+            // the database first: if it fails the task stays queued, in memory and on disk
+            store.dispatchTask(choice.task(), best.name(), text, now);
             queue.remove(choice.task());
             preferred.remove(choice.task());
-            String text = "dispatched to " + best.name() + (first == null ? "" : "; first goal " + first.describe() + " from each robot's state: " + why);
-            store.insertEvent(choice.task(), "dispatched", best.name(), text, now);
-            store.updateTask(choice.task(), TaskState.RUNNING, best.name(), null, null, now);
             best.start(choice.task(), task);
             dispatchNanos += System.nanoTime() - start;
             dispatches++;
@@ -393,41 +585,57 @@ public final class FleetService implements AutoCloseable {
             // the service is stopping: the task stays 'running' in the database and is recovered as interrupted
             return;
         }
+        if (status instanceof Status.TaskQueued) {
+            return;
+        }
+        boolean last = status instanceof Status.TaskCompleted || status instanceof Status.TaskAborted;
+        String stop = lane.stopReason().orElse(null);
         Instant now = clock.instant();
         try {
-            if (status instanceof Status.TaskQueued) {
+            if (LEASE_LOST.equals(stop)) {
+                // the instance that took the lease over owns the task now and has queued it again: write nothing
                 return;
             }
-            store.insertEvent(taskId, kind(status), lane.name(), status.toString(), now);
+            String[] event = { kind(status), status.toString() };
             if (status instanceof Status.TaskCompleted) {
-                synchronized (lock) {
-                    store.updateTask(taskId, TaskState.COMPLETED, lane.name(), null, null, now);
-                    lane.finished(taskId);
-                    lock.notifyAll();
-                }
+                durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.COMPLETED, lane.name(), null, null, now));
             } else if (status instanceof Status.TaskAborted a) {
-                String stop = lane.stopReason().orElse(null);
+                if (stop != null && stop.startsWith("cancelled")) {
+                    durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.CANCELLED, lane.name(), stop, null, now));
+                } else if (stop != null) {
+                    String[] interrupted = { "interrupted", "interrupted: " + stop + "; queued again" };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, interrupted), TaskState.QUEUED, null, stop, null, now));
+                } else {
+                    String[] request = { "remote_operation", "remote operation requested: " + a.reason() };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), a.reason(),
+                            new String[] { a.goal().describe(), a.reason() }, now));
+                }
+            } else {
+                durably(() -> store.insertEvent(taskId, event[0], lane.name(), event[1], now));
+            }
+        } catch (ServiceError e) {
+            // the service stops, or this instance lost the lease: the task's row keeps its last state and is recovered
+            System.err.println("triad serve: " + e.getMessage());
+        } finally {
+            if (last) {
                 synchronized (lock) {
-                    if (stop != null && stop.startsWith("cancelled")) {
-                        store.updateTask(taskId, TaskState.CANCELLED, lane.name(), null, stop, now);
-                    } else if (stop != null) {
-                        store.insertEvent(taskId, "interrupted", lane.name(), "interrupted: " + stop + "; queued again", now);
-                        store.updateTask(taskId, TaskState.QUEUED, null, null, stop, now);
+                    if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && dispatching) {
                         queue.add(taskId);
-                    } else {
-                        abort(taskId, lane.name(), a.goal().describe(), a.reason(), now);
                     }
                     lane.finished(taskId);
                     lock.notifyAll();
                 }
+            }
+        }
+        try {
+            if (status instanceof Status.TaskAborted) {
                 publishRequests();
             }
+            publishTask(taskId, false);
+            publish(new LiveEvent("robot", view(lane)));
         } catch (ServiceError e) {
-            // the database failed; the task's row keeps its last state and is recovered at the next start
-            System.err.println("triad serve: " + e.getMessage());
+            // the pages catch up at the next event once the database answers again
         }
-        publishTask(taskId, false);
-        publish(new LiveEvent("robot", view(lane)));
     }
 
     private void abort(long taskId, String robot, String goal, String reason, Instant now) {
@@ -448,7 +656,10 @@ public final class FleetService implements AutoCloseable {
     }
 
     private TaskView view(TaskRow t, boolean withEvents) {
-        List<EventView> events = withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null;
+        return view(t, withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null);
+    }
+
+    private TaskView view(TaskRow t, List<EventView> events) {
         JsonNode args;
         try {
             args = JSON.readTree(t.args());
@@ -519,6 +730,13 @@ public final class FleetService implements AutoCloseable {
         }
     }
 
+    /** The database's health and who dispatches, for the operator page. */
+    public Views.HealthView health() {
+        StoreHealth h = store.health();
+        return new Views.HealthView(store.database().shown(), h.ok(), h.outages().stream().map(StoreHealth.Outage::describe).toList(),
+                store.database().shared(), dispatching, List.copyOf(leaseHistory));
+    }
+
     @Override
     public void close() {
         running = false;
@@ -526,5 +744,6 @@ public final class FleetService implements AutoCloseable {
         for (RobotLane l : lanes.values()) {
             l.close();
         }
+        lease.close();
     }
 }

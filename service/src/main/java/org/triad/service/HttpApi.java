@@ -125,7 +125,14 @@ final class HttpApi {
             }
             ctx.json(service.tasks(filter, MAX_LIST));
         });
-        app.post("/api/tasks", ctx -> ctx.status(201).json(service.submit(body(ctx))));
+        app.post("/api/tasks", ctx -> {
+            String key = ctx.header("Idempotency-Key");
+            if (key != null && (key.isBlank() || key.length() > 200)) {
+                throw new ServiceError(400, "bad-idempotency-key", "the Idempotency-Key header takes 1 to 200 characters");
+            }
+            FleetService.Submission s = service.submit(body(ctx), key);
+            ctx.status(s.created() ? 201 : 200).json(s.task());
+        });
         app.get("/api/tasks/{id}", ctx -> ctx.json(service.task(id(ctx)).orElseThrow(() -> new ServiceError(404, "not-found", "no task " + ctx.pathParam("id")))));
         app.delete("/api/tasks/{id}", ctx -> {
             long id = id(ctx);
@@ -203,6 +210,7 @@ final class HttpApi {
             ctx.json(Map.of("name", name, "revoked", true));
         });
         app.get("/api/requests", ctx -> ctx.json(service.requests("true".equals(ctx.queryParam("all")))));
+        app.get("/api/health", ctx -> ctx.json(service.health()));
         app.sse("/api/events", client -> {
             client.keepAlive();
             try {

@@ -70,7 +70,12 @@ public final class OpenApiDocument {
         ObjectNode submit = op(tasks, "post", "submitTask", "Queues a task; it is dispatched to the robot that can finish it soonest.");
         submit.putObject("requestBody").put("required", true).putObject("content").putObject("application/json")
                 .putObject("schema").put("$ref", "#/components/schemas/TaskSubmission");
+        submit.putArray("parameters").addObject().put("name", "Idempotency-Key").put("in", "header").put("required", false)
+                .put("description", "A key of the client's choosing (1-200 characters): repeating a submission with it, e.g. after a lost answer,"
+                        + " returns the task stored the first time (200) instead of storing a second one")
+                .putObject("schema").put("type", "string").put("maxLength", 200);
         response(submit, "201", "Accepted and stored", ref("Task"));
+        response(submit, "200", "Stored before under this Idempotency-Key", ref("Task"));
         errors(submit, "400", "401", "413", "422", "503");
 
         ObjectNode one = paths.putObject("/api/tasks/{id}");

@@ -18,6 +18,7 @@ import org.triad.runtime.app.DomainObject;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.GoalSolver;
+import org.triad.service.store.Database;
 import org.triad.service.store.TaskStore;
 import org.triad.service.auth.AuditLog;
 import org.triad.service.auth.UserStore;
@@ -30,7 +31,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  */
 public final class TriadService implements AutoCloseable {
     public static final String VERSION = "0.1.0";
-    /** The database's default name, in the models folder; H2 adds {@code .mv.db}. */
+    /** The database's default name, in the models folder, to which {@code .db} is added. */
     public static final String DEFAULT_DB = "triad-service";
 
     /**
@@ -38,14 +39,20 @@ public final class TriadService implements AutoCloseable {
      *
      * @param robots    {@code SCHEME:ARGUMENT} each; empty: the application's own {@code sim:1} if it has one, else {@code dry:1}
      * @param situation the situation dry-run robots start in ({@code null}: the application's first)
-     * @param db        the database file ({@code null}: {@value #DEFAULT_DB}.mv.db in the models folder)
+     * @param db        the database: a file ({@code null}: {@value #DEFAULT_DB}.db in the models folder) or
+     *                  {@code postgresql://USER:PASSWORD@HOST:PORT/DB}
      * @param config    a properties file with {@code submit-token}/{@code operator-token}, or {@code null}
      * @param port      0 for a free port
      */
-    public record Options(Path models, List<String> robots, String situation, Path db, Path config, String host, int port, Map<String, String> env) {
+    public record Options(Path models, List<String> robots, String situation, String db, Path config, String host, int port, Map<String, String> env) {
         public Options {
             robots = List.copyOf(robots);
             env = Map.copyOf(env);
+        }
+
+        /** The database as a file path. */
+        public Options(Path models, List<String> robots, String situation, Path db, Path config, String host, int port, Map<String, String> env) {
+            this(models, robots, situation, db == null ? null : db.toString(), config, host, port, env);
         }
     }
 
@@ -78,8 +85,10 @@ public final class TriadService implements AutoCloseable {
     public static TriadService start(Options o) {
         HttpsSettings https = HttpsSettings.from(o.env()); // a certificate that cannot be used stops the start before anything else
         ApplicationModels models = ApplicationModels.load(o.models());
-        Path dbFile = o.db() != null ? o.db() : o.models().resolve(DEFAULT_DB);
-        TaskStore store = TaskStore.open(dbFile);
+        TaskStore store = TaskStore.open(Database.of(o.db() != null ? o.db() : o.models().resolve(DEFAULT_DB).toString()));
+        if (store.notice() != null) {
+            System.err.println("triad serve: " + store.notice());
+        }
         List<FleetRobot> robots = List.of();
         FleetService fleet = null;
         try {
@@ -238,8 +247,9 @@ public final class TriadService implements AutoCloseable {
         return store;
     }
 
-    public Path database() {
-        return store.file();
+    /** The database file, or the server's address without password. */
+    public String database() {
+        return store.database().shown();
     }
 
     public String application() {

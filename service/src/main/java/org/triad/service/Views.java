@@ -24,6 +24,13 @@ public final class Views {
             String resolution) {
     }
 
+    /**
+     * The database (address without password), whether it works, its outages (now and healed) and,
+     * with several instances on one server, whether this one dispatches and the lease's history.
+     */
+    public record HealthView(String database, boolean ok, List<String> outages, boolean shared, boolean dispatching, List<String> lease) {
+    }
+
     /** One message of the live stream: {@code type} task, robot or request, and its view. */
     public record LiveEvent(String type, Object data) {
     }

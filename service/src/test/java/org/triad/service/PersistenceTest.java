@@ -45,7 +45,7 @@ class PersistenceTest {
             assertEquals("running", first.fleet().task(patrol).orElseThrow().state());
             assertEquals("queued", first.fleet().task(queued).orElseThrow().state());
 
-            // H2 shares an open database within one JVM; another process finds it locked
+            // another process finds the database locked (NAME.db.lock)
             Process probe = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
                     System.getProperty("java.class.path"), LockProbe.class.getName(), db.toString()).redirectErrorStream(true).start();
             String said = new String(probe.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).strip();

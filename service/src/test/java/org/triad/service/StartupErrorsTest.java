@@ -64,7 +64,7 @@ class StartupErrorsTest {
 
     @Test
     void modelsThatDoNotExistAreAStartupError() {
-        TriadService.Options o = new TriadService.Options(dir.resolve("nowhere"), List.of(), null, null, null, "127.0.0.1", 0, Map.of());
+        TriadService.Options o = new TriadService.Options(dir.resolve("nowhere"), List.of(), null, (String) null, null, "127.0.0.1", 0, Map.of());
         assertTrue(failure(o).getMessage().startsWith("not a folder: "));
     }
 }

@@ -24,6 +24,8 @@
       source.onopen = () => document.getElementById("connection").textContent = "live";
       source.onerror = () => document.getElementById("connection").textContent = "reconnecting...";
       setInterval(refreshMaps, 300);
+      showHealth();
+      setInterval(showHealth, 2000);
     } catch (e) {
       if (e.status === 401) {
         const box = document.getElementById("access");
@@ -33,6 +35,20 @@
       } else {
         msg.textContent = e.message;
       }
+    }
+  }
+
+  // the database's outages (a full disk, a lost connection) and, with several instances, who dispatches
+  async function showHealth() {
+    try {
+      const h = await api("GET", "/api/health");
+      const who = h.shared ? (h.dispatching ? "; this instance dispatches" : "; another instance dispatches") : "";
+      const line = document.getElementById("database");
+      line.textContent = h.database + (h.ok ? ": works" : ": FAILS, retrying") + who;
+      line.className = h.ok ? "muted" : "error";
+      document.getElementById("outages").replaceChildren(...h.outages.concat(h.lease).map(o => el("li", {}, o)));
+    } catch (e) {
+      document.getElementById("database").textContent = "the service does not answer: " + e.message;
     }
   }
 

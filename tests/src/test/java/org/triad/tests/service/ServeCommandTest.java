@@ -44,6 +44,18 @@ class ServeCommandTest {
 	}
 
 	@Test
+	void aDamagedDatabaseIsRefusedNamingTheRecoveryCommand(@TempDir Path dir) throws Exception {
+		java.nio.file.Files.writeString(dir.resolve("db.db"), "not a database ".repeat(500));
+		Run run = run("serve", Path.of("..", "models", "hospital").toString(), "--robots", "dry:1", "--port", "0", "--db", dir.resolve("db").toString());
+		assertEquals(2, run.exit());
+		assertTrue(run.err().startsWith("triad serve: database " + dir.resolve("db.db") + " is damaged: not a SQLite database"), run.err());
+		assertTrue(run.err().contains("--db " + dir.resolve("db.db") + " --recover"), run.err());
+		Run onServer = run("serve", Path.of("..", "models", "hospital").toString(), "--db", "postgresql://triad@127.0.0.1:1/triad", "--recover");
+		assertEquals(2, onServer.exit());
+		assertTrue(onServer.err().contains("--recover salvages the embedded database file"), onServer.err());
+	}
+
+	@Test
 	void aBadPortIsExitCode2() {
 		assertEquals(2, run("serve", ".", "--port", "70000").exit());
 	}
