@@ -63,6 +63,10 @@ final class SolveRun {
 				String text = r.plan().toPddl();
 				out.print(text);
 				out.flush();
+				if (r.isBestSoFar()) {
+					// valid, but not the engine's deterministic answer: a longer --timeout gives that
+					err.println("note: " + r.message() + " (a longer --timeout gives the same plan on every run)");
+				}
 				if (planFile != null) {
 					try {
 						Files.writeString(planFile, text);
