@@ -129,9 +129,14 @@ public final class TriadEngine implements PddlPlanner {
         long deadline = start + timeout.toNanos();
         GroundedProblem.Query q;
         try {
-            q = cache.get(domain, problem).query(problem);
+            q = GroundingLimits.withDeadline(deadline, () -> cache.get(domain, problem).query(problem));
+        } catch (GroundingTimeoutException e) {
+            return new SolveResult(SolveResult.Status.TIMEOUT, null, e.getMessage(), new SolveResult.Stats((System.nanoTime() - start) / 1e6, 0, 0, 0));
         } catch (PlanningInputException e) {
             return SolveResult.error(e.getMessage());
+        } catch (OutOfMemoryError e) {
+            // the estimates refuse what cannot fit; this is what they missed (the grounding is dropped)
+            return SolveResult.error(outOfMemory("grounding"));
         } catch (RuntimeException e) {
             return SolveResult.error("internal error while grounding: " + e);
         }
@@ -140,13 +145,23 @@ public final class TriadEngine implements PddlPlanner {
         if (q.unsolvableReason() != null) {
             return SolveResult.unreachable(q.unsolvableReason(), q.unreachable(), new SolveResult.Stats(groundMs, 0, 0, 0));
         }
-        SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
-        SearchTask.Scratch scratch = task.takeScratch();
         try {
-            return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
-        } finally {
-            task.returnScratch(scratch);
+            SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
+            SearchTask.Scratch scratch = task.takeScratch();
+            try {
+                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+            } finally {
+                task.returnScratch(scratch);
+            }
+        } catch (OutOfMemoryError e) {
+            // the search's states are garbage once this returns: the caller (a robot's planner
+            // component) fails this goal, not the JVM
+            return SolveResult.error(outOfMemory("search"));
         }
+    }
+
+    private static String outOfMemory(String phase) {
+        return "out of memory in " + phase + ": the task needs more than the memory given (" + (Runtime.getRuntime().maxMemory() >> 20) + " MB)";
     }
 
     private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
@@ -227,7 +242,10 @@ public final class TriadEngine implements PddlPlanner {
         }
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
         boolean bestSoFar = false;
-        if (exact || singleGoalAstar || improvementCap <= 0) {
+        if (exact) {
+            // a shortest plan: nothing to eliminate (and elimination is quadratic in its length:
+            // a chain of 100,000 places)
+        } else if (singleGoalAstar || improvementCap <= 0) {
             plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
         } else {
             long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
