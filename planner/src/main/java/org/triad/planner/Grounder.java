@@ -55,6 +55,8 @@ final class Grounder {
     private final Map<String, Double> numeric = new HashMap<>();
 
     final List<GroundOp> ops = new ArrayList<>();
+    /** The timeout of the thread grounding now (set again by every {@link #extend}). */
+    private GroundingLimits.Clock clock = GroundingLimits.clock();
     private final Normalizer normalizer;
     private final GroundFormula groundFormula;
     /** Lifted normal forms of quantified preconditions beyond this size are grounded per operator instead. */
@@ -222,6 +224,7 @@ final class Grounder {
 
     /** Marks facts as initially true and continues the fixpoint; returns whether new actions appeared. */
     boolean extend(List<Formula.Atom> init) {
+        clock = GroundingLimits.clock();
         int before = ops.size();
         for (Formula.Atom a : init) {
             int p = pred(a);
@@ -418,7 +421,7 @@ final class Grounder {
     }
 
     private void join(Schema s, int[] b, boolean[] done, int remaining) {
-        GroundingLimits.tick();
+        clock.tick();
         if (remaining == 0) {
             checkFreeParameters(s, b);
             enumerateFree(s, b, 0);
@@ -495,7 +498,7 @@ final class Grounder {
     }
 
     private void instantiate(Schema s, int[] b) {
-        GroundingLimits.tick();
+        clock.tick();
         for (int i = 0; i < s.eq.length; i++) {
             boolean same = value(s.eq[i][0], b) == value(s.eq[i][1], b);
             if (same != s.eqPositive[i]) return;

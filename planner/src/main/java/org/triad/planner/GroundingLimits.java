@@ -20,27 +20,41 @@ final class GroundingLimits {
     /** Checking the clock on every step would cost more than the steps. */
     private static final int CLOCK_EVERY = 1024;
 
-    private static final ThreadLocal<long[]> DEADLINE = ThreadLocal.withInitial(() -> new long[] {Long.MAX_VALUE, 0});
+    private static final ThreadLocal<Clock> CLOCK = ThreadLocal.withInitial(Clock::new);
 
     private GroundingLimits() { }
 
-    /** Runs {@code grounding} with the timeout checked at {@code deadlineNanos} ({@link System#nanoTime()}). */
-    static <T> T withDeadline(long deadlineNanos, java.util.function.Supplier<T> grounding) {
-        long[] d = DEADLINE.get();
-        long saved = d[0];
-        d[0] = deadlineNanos;
-        try {
-            return grounding.get();
-        } finally {
-            d[0] = saved;
+    /**
+     * The timeout of the grounding running on this thread: fetched once per phase and ticked in its
+     * loops (a thread-local look-up per step would cost the hospital's warm goals measurably).
+     */
+    static final class Clock {
+        private long deadline = Long.MAX_VALUE;
+        private int steps;
+
+        /** Throws {@link GroundingTimeoutException} once the deadline has passed (looks at the clock every so often). */
+        void tick() {
+            if (++steps % CLOCK_EVERY == 0 && deadline != Long.MAX_VALUE && System.nanoTime() > deadline) {
+                throw new GroundingTimeoutException();
+            }
         }
     }
 
-    /** Throws {@link GroundingTimeoutException} once the deadline has passed (looks at the clock every so often). */
-    static void tick() {
-        long[] d = DEADLINE.get();
-        if (d[0] == Long.MAX_VALUE) return;
-        if (++d[1] % CLOCK_EVERY == 0 && System.nanoTime() > d[0]) throw new GroundingTimeoutException();
+    /** This thread's grounding clock. */
+    static Clock clock() {
+        return CLOCK.get();
+    }
+
+    /** Runs {@code grounding} with the timeout checked at {@code deadlineNanos} ({@link System#nanoTime()}). */
+    static <T> T withDeadline(long deadlineNanos, java.util.function.Supplier<T> grounding) {
+        Clock c = CLOCK.get();
+        long saved = c.deadline;
+        c.deadline = deadlineNanos;
+        try {
+            return grounding.get();
+        } finally {
+            c.deadline = saved;
+        }
     }
 
     /** Ground actions the heap can hold. */

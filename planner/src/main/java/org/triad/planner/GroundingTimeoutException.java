@@ -1,6 +1,6 @@
 package org.triad.planner;
 
-/** The timeout passed while grounding ({@link GroundingLimits#tick()}); the engine answers TIMEOUT. */
+/** The timeout passed while grounding ({@link GroundingLimits.Clock#tick()}); the engine answers TIMEOUT. */
 final class GroundingTimeoutException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 

@@ -82,6 +82,7 @@ final class Normalizer {
 
     List<Map<String, String>> bindings(List<TypedName> vars, Map<String, String> base) {
         checkBindings(universe, vars);
+        GroundingLimits.Clock clock = GroundingLimits.clock();
         List<Map<String, String>> out = new ArrayList<>();
         out.add(new HashMap<>(base));
         for (TypedName v : vars) {
@@ -89,7 +90,7 @@ final class Normalizer {
             List<Map<String, String>> next = new ArrayList<>();
             for (Map<String, String> m : out) {
                 for (int o : objs) {
-                    GroundingLimits.tick();
+                    clock.tick();
                     Map<String, String> n = new HashMap<>(m);
                     n.put(v.name(), universe.names.get(o));
                     next.add(n);

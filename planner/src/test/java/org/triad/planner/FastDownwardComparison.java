@@ -110,9 +110,13 @@ public final class FastDownwardComparison {
                 List<String> all = new ArrayList<>(idle);
                 all.addAll(loaded);
                 all.add(t[0]);
-                boolean same = all.stream().distinct().count() == 1;
+                // "-": no plan within the cap (a slow run on a loaded machine), not another plan
+                List<String> lengths = all.stream().filter(x -> !x.equals("-")).distinct().toList();
+                long capped = all.stream().filter(x -> x.equals("-")).count();
+                boolean same = lengths.size() <= 1;
                 if (!same) varying++;
-                repeated = " " + (same ? "all " + t[0] : String.join(" ", idle) + " / " + String.join(" ", loaded)) + " |";
+                repeated = " " + (same && !lengths.isEmpty() ? "all " + lengths.get(0) + (capped > 0 ? " (" + capped + " of " + all.size() + " runs stopped at the cap)" : "")
+                        : String.join(" ", idle) + " / " + String.join(" ", loaded)) + " |";
             }
             System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%s%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio,
                     repeated);
