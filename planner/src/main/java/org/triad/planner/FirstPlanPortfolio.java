@@ -31,7 +31,7 @@ final class FirstPlanPortfolio {
     /** Work of each configuration in the first round (about half a second). */
     static final long FIRST_SLICE_WORK = WorkMeter.UNITS_PER_SECOND / 2;
     static final int CONFIGURATIONS = 4;
-    /** A lazy search still improving its heuristic keeps its turn up to this share of the time (2/3). */
+    /** A lazy search still improving its heuristic keeps its turn up to this share of the work (2/3). */
     static final long PROGRESS_SHARE_NUMERATOR = 2;
     static final long PROGRESS_SHARE_DENOMINATOR = 3;
 

@@ -95,7 +95,7 @@ final class PlanImprover {
             // exhausted under the bound: no shorter plan exists for any weight (a limit says nothing)
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
         }
-        // restarts that stopped at their evaluation limit leave time to larger neighbourhoods
+        // restarts that stopped at their evaluation limit leave work to larger neighbourhoods
         if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, workUntil, true);
         return best;
     }

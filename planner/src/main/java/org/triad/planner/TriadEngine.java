@@ -30,8 +30,8 @@ import org.triad.planner.pddl.Problem;
  *     the problem unsolvable), on {@link NegativeGoalCompilation}'s task when there are negative
  *     goals (so that the heuristics see them);</li>
  * </ol>
- * and finally makes the plan shorter: an exact search's plan, and an A* plan for a single open goal
- * (what RefArc plans per goal), only lose redundant actions; any other plan goes to {@link PlanImprover}
+ * and finally makes the plan shorter: an exact search's plan is shortest already, an A* plan for a
+ * single open goal (what RefArc plans per goal) only loses redundant actions; any other plan goes to {@link PlanImprover}
  * (action elimination, the lazy search when the agenda found the plan, plan neighbourhood graph
  * search, length-bounded weighted A* restarts) within a budget of work: twice the work to the first
  * plan (a share for grounding included), plus a little for several goals, never beyond the
@@ -41,7 +41,9 @@ import org.triad.planner.pddl.Problem;
  * ({@link WorkMeter}: heuristic evaluations, successor generation), never time, and every choice
  * breaks ties by ids, so the same input gives the same plan on any machine and under any load. The
  * timeout only ends planning: before the first plan it is a TIMEOUT, during improvement the best plan
- * so far is returned and said to be one ({@link SolveResult#isBestSoFar()}).
+ * so far is returned and said to be one ({@link SolveResult#isBestSoFar()}). Grounding keeps the
+ * timeout too, and refuses a task too large for the heap before instantiating it
+ * ({@link GroundingLimits}).
  */
 public final class TriadEngine implements PddlPlanner {
     /** Heuristic evaluations allowed to one bounded stage before falling back. */
@@ -87,7 +89,7 @@ public final class TriadEngine implements PddlPlanner {
     /**
      * Each improving search (the lazy one, every restart) may evaluate this many times the states the
      * first plan needed, at least {@link #IMPROVEMENT_MIN_EVALUATIONS}: one that needs far more rarely
-     * pays off, and a failed one leaves time to the next.
+     * pays off, and a failed one leaves work to the next.
      */
     static final long IMPROVEMENT_EVALUATION_FACTOR = 5;
     static final long IMPROVEMENT_MIN_EVALUATIONS = 1000;
