@@ -42,27 +42,56 @@ final class SolveRun {
 	}
 
 	int run(PrintWriter out, PrintWriter err) {
+		long start = System.nanoTime();
+		long timeoutNanos = (long) (timeoutSeconds * 1e9);
 		Domain domain;
 		Problem problem;
+		// the timeout holds while reading too: the files are parsed on a daemon thread that is left
+		// behind if it takes longer (the process ends right after)
+		java.util.concurrent.FutureTask<Object[]> parsing = new java.util.concurrent.FutureTask<>(
+				() -> new Object[] { PddlParser.parseDomain(domainFile), PddlParser.parseProblem(problemFile) });
+		Thread reader = new Thread(parsing, "triad-solve-parse");
+		reader.setDaemon(true);
+		reader.start();
 		try {
-			domain = PddlParser.parseDomain(domainFile);
-			problem = PddlParser.parseProblem(problemFile);
-		} catch (PddlParseException e) {
-			err.println("error: " + e.getMessage());
+			Object[] parsed = parsing.get(timeoutNanos, java.util.concurrent.TimeUnit.NANOSECONDS);
+			domain = (Domain) parsed[0];
+			problem = (Problem) parsed[1];
+		} catch (java.util.concurrent.TimeoutException e) {
+			parsing.cancel(true);
+			err.println("no plan: time limit of " + timeoutSeconds + " s reached while parsing");
+			return 1;
+		} catch (InterruptedException e) {
+			Thread.currentThread().interrupt();
+			err.println("error: interrupted while parsing");
 			return 2;
-		} catch (NoSuchFileException e) {
-			err.println("error: no such file: " + e.getFile());
-			return 2;
-		} catch (IOException e) {
-			err.println("error: cannot read input: " + e.getMessage());
+		} catch (java.util.concurrent.ExecutionException e) {
+			Throwable cause = e.getCause();
+			if (cause instanceof PddlParseException) {
+				err.println("error: " + cause.getMessage());
+			} else if (cause instanceof NoSuchFileException n) {
+				err.println("error: no such file: " + n.getFile());
+			} else if (cause instanceof IOException) {
+				err.println("error: cannot read input: " + cause.getMessage());
+			} else if (cause instanceof OutOfMemoryError) {
+				err.println("error: out of memory while parsing: the input needs more than the memory given ("
+						+ (Runtime.getRuntime().maxMemory() >> 20) + " MB)");
+			} else {
+				err.println("error: cannot read input: " + cause);
+			}
 			return 2;
 		}
-		SolveResult r = engine.solve(domain, problem, Duration.ofMillis((long) (timeoutSeconds * 1000)));
+		long left = Math.max(0, timeoutNanos - (System.nanoTime() - start));
+		SolveResult r = engine.solve(domain, problem, Duration.ofNanos(left));
 		switch (r.status()) {
 			case SOLVED: {
 				String text = r.plan().toPddl();
 				out.print(text);
 				out.flush();
+				if (r.isBestSoFar()) {
+					// valid, but not the engine's deterministic answer: a longer --timeout gives that
+					err.println("note: " + r.message() + " (a longer --timeout gives the same plan on every run)");
+				}
 				if (planFile != null) {
 					try {
 						Files.writeString(planFile, text);
@@ -77,7 +106,8 @@ final class SolveRun {
 				err.println("no plan: problem is unsolvable (" + r.message() + ")");
 				return 1;
 			case TIMEOUT:
-				err.println("no plan: time limit of " + timeoutSeconds + " s reached");
+				err.println("no plan: time limit of " + timeoutSeconds + " s reached"
+						+ (r.message().startsWith("time limit reached while") ? r.message().substring("time limit reached".length()) : ""));
 				return 1;
 			default:
 				err.println("error: " + r.message());

@@ -52,6 +52,32 @@ class SolveCommandTest {
 	}
 
 	@Test
+	void aTaskTooLargeIsRefusedInOneLineAndTheTimeoutHoldsWhileGrounding() throws IOException {
+		Path domain = dir.resolve("free3.pddl");
+		Files.writeString(domain, "(define (domain free3) (:requirements :strips :typing) (:types obj) (:predicates (done ?a ?b ?c - obj))"
+				+ " (:action act :parameters (?a ?b ?c - obj) :precondition (and) :effect (done ?a ?b ?c)))");
+		Run huge = TriadCliTest.run("solve", domain.toString(), free3(1000).toString(), "--timeout", "10");
+		assertEquals(2, huge.exit(), huge.err());
+		assertTrue(huge.err().startsWith("error: grounding would create 1·10⁹ actions of 'act' (3 parameters no precondition binds, 1,000 objects each)"),
+				huge.err());
+		assertEquals(1, huge.err().strip().lines().count(), huge.err());
+		// 10⁶ actions fit the estimate but take longer than half a second to ground
+		Run slow = TriadCliTest.run("solve", domain.toString(), free3(100).toString(), "--timeout", "0.5");
+		assertEquals(1, slow.exit(), slow.err());
+		assertTrue(slow.err().matches("no plan: time limit of 0.5 s reached while (parsing|grounding)\\R?"), slow.err());
+	}
+
+	private Path free3(int objects) throws IOException {
+		StringBuilder names = new StringBuilder();
+		for (int i = 0; i < objects; i++) {
+			names.append(" o").append(i);
+		}
+		Path problem = dir.resolve("free3-" + objects + ".pddl");
+		Files.writeString(problem, "(define (problem f) (:domain free3) (:objects" + names + " - obj) (:init) (:goal (done o1 o2 o3)))");
+		return problem;
+	}
+
+	@Test
 	void exitsTwoWithOneLineOnUsageAndInputErrors() throws IOException {
 		Run one = TriadCliTest.run("solve", "only-one.pddl");
 		assertEquals(2, one.exit());

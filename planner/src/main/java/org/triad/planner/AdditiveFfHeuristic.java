@@ -82,6 +82,7 @@ final class AdditiveFfHeuristic extends FfHeuristic {
         current = 0;
         highest = 0;
         for (int f : state) reach(f, 0, -1);
+        work += state.length;
         // a fact the state lacks makes its complement true (negative preconditions and conditions)
         for (int k = 0; k < t.negFacts.length; k++) {
             if (factEpoch[t.negFacts[k]] != epoch) reach(t.numFacts + k, 0, -1);
@@ -102,6 +103,7 @@ final class AdditiveFfHeuristic extends FfHeuristic {
             done[f] = epoch;
             if (goalMark[f] == epoch) missing--;
             int c = cost[f];
+            work += preStart[f + 1] - preStart[f] + 1;
             for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
                 int o = preOps[i];
                 int s3 = 3 * o;

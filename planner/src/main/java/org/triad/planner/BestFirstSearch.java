@@ -20,6 +20,9 @@ final class BestFirstSearch {
     private final long deadline;
     /** Successors reached by this many actions or more are not generated: only shorter plans are sought. */
     private int lengthBound = Integer.MAX_VALUE;
+    /** With {@link #limitWork}: LIMIT once the meter reaches this (a budget that does not depend on time). */
+    private WorkMeter meter;
+    private long workUntil = Long.MAX_VALUE;
 
     BestFirstSearch(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos) {
         this.task = task;
@@ -32,6 +35,17 @@ final class BestFirstSearch {
     BestFirstSearch boundLength(int actions) {
         lengthBound = actions;
         return this;
+    }
+
+    /** Makes later runs stop with LIMIT once {@code meter} reaches {@code until} work units. */
+    BestFirstSearch limitWork(WorkMeter meter, long until) {
+        this.meter = meter;
+        this.workUntil = until;
+        return this;
+    }
+
+    private boolean workSpent() {
+        return meter != null && meter.now() >= workUntil;
     }
 
     private static long key(long f, int h) {
@@ -68,7 +82,7 @@ final class BestFirstSearch {
         boolean turn = false;
         while (!open.isEmpty() || !pref.isEmpty()) {
             if (System.nanoTime() > deadline) return new Result(Outcome.TIMEOUT, null, null, expanded, evaluated);
-            if (evaluated >= evaluationLimit) return new Result(Outcome.LIMIT, null, null, expanded, evaluated);
+            if (evaluated >= evaluationLimit || workSpent()) return new Result(Outcome.LIMIT, null, null, expanded, evaluated);
             NodeHeap q;
             if (pref.isEmpty()) {
                 q = open;

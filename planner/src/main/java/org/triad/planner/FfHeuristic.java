@@ -28,6 +28,12 @@ class FfHeuristic {
     private final int[] factMark;
     private final int[] queue;
     private int epoch;
+    /**
+     * Work done so far: facts explored plus operator rows scanned, over all evaluations. A measure
+     * of effort that does not depend on the machine or its load, so that budgets counted in it give
+     * the same plan everywhere ({@link WorkMeter}).
+     */
+    long work;
 
     FfHeuristic(SearchTask task) {
         this.t = task.relaxed;
@@ -46,6 +52,11 @@ class FfHeuristic {
         addFacts = rows.addFacts;
         factMark = new int[nf];
         queue = new int[nf];
+    }
+
+    /** {@link #work}, for callers outside the heuristic. */
+    long work() {
+        return work;
     }
 
     int helpfulCount() {
@@ -95,9 +106,11 @@ class FfHeuristic {
         for (int i = 0; i < tail; i++) {
             if (goalMark[queue[i]] == -epoch && level[queue[i]] > 0) missing--;
         }
+        work += tail;
         while (head < tail && missing > 0) {
             int f = queue[head++];
             int lf = level[f];
+            work += preStart[f + 1] - preStart[f] + 1;
             for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
                 int o = preOps[i];
                 int pc = preCount[o];
@@ -173,10 +186,12 @@ class FfHeuristic {
                 }
             }
         }
+        work += tail;
         for (int head = 0; head < tail; head++) {
             int f = queue[head];
             int lf = level[f];
             if (lf + 1 > foundLevel) break;
+            work += preStart[f + 1] - preStart[f] + 1;
             for (int i = preStart[f], end = preStart[f + 1]; i < end; i++) {
                 int o = preOps[i];
                 int pc = preCount[o];

@@ -2,8 +2,8 @@ package org.triad.planner;
 
 /**
  * The complete search for a first plan when the goal agenda (or a bounded single-goal A*) fails:
- * four greedy configurations take turns in time slices (0.5 s in the first round, doubled every
- * round):
+ * four greedy configurations take turns in slices of work ({@link WorkMeter}: about 0.5 s in the
+ * first round, doubled every round):
  * <ol>
  * <li>LAMA's first iteration ({@link LazyGreedySearch} with the FF and landmark-count heuristics);</li>
  * <li>lazy greedy search with FF alone, h^add supporters ({@link AdditiveFfHeuristic}, as Fast
@@ -13,23 +13,25 @@ package org.triad.planner;
  * <li>lazy greedy search with FF alone, level supporters.</li>
  * </ol>
  * The lazy searches are resumed where their last turn stopped, and one that reached a new best
- * heuristic value during its turn keeps the turn while it has used at most two thirds of the time,
+ * heuristic value during its turn keeps the turn while it has used at most two thirds of the work,
  * so a search that is getting on (LAMA on woodworking, about 6 s) is barely slowed while one stuck
  * on a plateau hands over. Why not LAMA alone: where resources make states dead ends the
  * heuristics do not see (fuel, a truck's time slots), the landmark count can hold the search on a
  * plateau that FF alone leaves quickly (nomystery p07: 167 evaluations with FF alone, none within
  * 60 s with the landmark queue added; trucks p10: 21,000 evaluations eager); where level-first
- * relaxed plans mislead, h^add supporters do not (transport-sat11 p03). Time slices, not evaluation
- * counts, because evaluations differ up to tenfold in cost between configurations. Every
+ * relaxed plans mislead, h^add supporters do not (transport-sat11 p03). Slices of work units (facts
+ * and operator rows touched), not evaluation counts, because evaluations differ up to tenfold in cost
+ * between configurations; not time, so that the turns, and the plan, do not depend on the machine's
+ * load (the deadline only ends the search). Every
  * configuration is complete (closed lists; only relaxed dead ends are pruned), so exhausting any one
  * but the h^add one proves the task unsolvable (the h^add relaxation reads preconditions and adds only;
  * where the task has more, such as conditional effects, its dead ends are no proof).
  */
 final class FirstPlanPortfolio {
-    /** Time of each configuration in the first round. */
-    static final long FIRST_SLICE_NANOS = 500_000_000L;
+    /** Work of each configuration in the first round (about half a second). */
+    static final long FIRST_SLICE_WORK = WorkMeter.UNITS_PER_SECOND / 2;
     static final int CONFIGURATIONS = 4;
-    /** A lazy search still improving its heuristic keeps its turn up to this share of the time (2/3). */
+    /** A lazy search still improving its heuristic keeps its turn up to this share of the work (2/3). */
     static final long PROGRESS_SHARE_NUMERATOR = 2;
     static final long PROGRESS_SHARE_DENOMINATOR = 3;
 
@@ -37,63 +39,81 @@ final class FirstPlanPortfolio {
     private final FfHeuristic heuristic;
     private final Successors successors;
     private final long deadline;
+    private final WorkMeter meter;
+    private long work;
 
     FirstPlanPortfolio(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos) {
         this.task = task;
         this.heuristic = heuristic;
         this.successors = successors;
         this.deadline = deadlineNanos;
+        this.meter = new WorkMeter(heuristic, successors);
+    }
+
+    /** Work units the last {@link #run} used. */
+    long work() {
+        return work;
     }
 
     /** FOUND, EXHAUSTED or TIMEOUT; {@code effort} gets the expansions and evaluations of all runs. */
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg, long[] effort) {
-        long begin = System.nanoTime();
+        long begin = meter.now();
+        try {
+            return turns(init, goalPos, goalNeg, effort, begin);
+        } finally {
+            work = meter.now() - begin;
+        }
+    }
+
+    private BestFirstSearch.Result turns(int[] init, int[] goalPos, int[] goalNeg, long[] effort, long begin) {
         Landmarks landmarks = new Landmarks(task, init, goalPos, deadline);
         LazyGreedySearch.Run[] lazy = new LazyGreedySearch.Run[CONFIGURATIONS];
-        long[] usedNanos = new long[CONFIGURATIONS];
+        long[] usedWork = new long[CONFIGURATIONS];
         long[] counted = new long[2 * CONFIGURATIONS];
-        long slice = FIRST_SLICE_NANOS;
+        long slice = FIRST_SLICE_WORK;
         int config = 0;
         boolean exhaustedAdditive = false;
         while (true) {
-            long now = System.nanoTime();
-            if (now > deadline) return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, 0, 0);
+            long now = meter.now();
+            if (System.nanoTime() > deadline) return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, 0, 0);
             if (config == 1 && exhaustedAdditive) {
                 config = 2;
                 continue;
             }
-            long until = deadline - now > slice ? now + slice : deadline;
+            long until = now + slice;
             BestFirstSearch.Result r;
             boolean progressed = false;
             if (config == 2) {
-                r = new BestFirstSearch(task, heuristic, successors, until).run(init, goalPos, goalNeg, 0, 1, true, Long.MAX_VALUE);
+                r = new BestFirstSearch(task, heuristic, successors, deadline).limitWork(meter, until)
+                        .run(init, goalPos, goalNeg, 0, 1, true, Long.MAX_VALUE);
                 effort[0] += r.expanded();
                 effort[1] += r.evaluated();
             } else {
                 if (lazy[config] == null) {
                     FfHeuristic h = config == 1 ? new AdditiveFfHeuristic(task) : heuristic;
+                    meter.add(h);
                     lazy[config] = new LazyGreedySearch(h, config == 0 ? landmarks : null, successors, deadline).start(init, goalPos, goalNeg);
                 }
                 long before = lazy[config].evaluated();
-                r = lazy[config].resume(until, Long.MAX_VALUE);
+                r = lazy[config].resume(meter, until, Long.MAX_VALUE);
                 progressed = lazy[config].lastProgress() > before;
                 effort[0] += r.expanded() - counted[2 * config];
                 effort[1] += r.evaluated() - counted[2 * config + 1];
                 counted[2 * config] = r.expanded();
                 counted[2 * config + 1] = r.evaluated();
             }
-            usedNanos[config] += System.nanoTime() - now;
+            usedWork[config] += meter.now() - now;
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED && config == 1) {
                 // its exhaustion only ends its turns: the searches with the level-based FF, whose
                 // exhaustion the engine reports as unsolvable, decide that alone
-                usedNanos[config] = Long.MAX_VALUE / 4;
+                usedWork[config] = Long.MAX_VALUE / 4;
                 exhaustedAdditive = true;
-            } else if (r.outcome() != BestFirstSearch.Outcome.TIMEOUT) {
-                return r;
+            } else if (r.outcome() != BestFirstSearch.Outcome.LIMIT) {
+                return r; // a plan, exhaustion, or the deadline
             }
             // a lazy search that reached a new best heuristic value keeps its turn, within its share
-            long elapsed = System.nanoTime() - begin;
-            if (progressed && usedNanos[config] * PROGRESS_SHARE_DENOMINATOR <= elapsed * PROGRESS_SHARE_NUMERATOR) continue;
+            long elapsed = meter.now() - begin;
+            if (progressed && usedWork[config] * PROGRESS_SHARE_DENOMINATOR <= elapsed * PROGRESS_SHARE_NUMERATOR) continue;
             config = (config + 1) % CONFIGURATIONS;
             if (config == 0) slice = Math.min(slice * 2, Long.MAX_VALUE / 4);
         }

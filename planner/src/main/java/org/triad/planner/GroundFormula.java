@@ -121,12 +121,15 @@ final class GroundFormula {
     }
 
     private List<Map<String, String>> bindings(List<TypedName> vars, Map<String, String> base) {
+        Normalizer.checkBindings(g.universe, vars);
+        GroundingLimits.Clock clock = GroundingLimits.clock();
         List<Map<String, String>> out = new ArrayList<>();
         out.add(base);
         for (TypedName v : vars) {
             List<Map<String, String>> next = new ArrayList<>();
             for (Map<String, String> m : out) {
                 for (int o : g.universe.ofTypes(v.types())) {
+                    clock.tick();
                     Map<String, String> n = new HashMap<>(m);
                     n.put(v.name(), g.universe.names.get(o));
                     next.add(n);

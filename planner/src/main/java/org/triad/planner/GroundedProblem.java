@@ -16,6 +16,7 @@ public final class GroundedProblem {
     private final Grounder grounder;
     private SearchTask task;
     private int extensions;
+    private volatile boolean broken;
 
     /** A search query: the task, its initial state and goal, or the reason it is trivially unsolvable. */
     record Query(SearchTask task, int[] init, int[] goalPos, int[] goalNeg, String unsolvableReason, List<UnreachableGoal> unreachable) {
@@ -27,6 +28,11 @@ public final class GroundedProblem {
     GroundedProblem(Domain domain, Problem problem) {
         grounder = new Grounder(domain, problem);
         grounder.extend(problem.init());
+    }
+
+    /** Whether an extension was cut short (timeout, size refusal): the cache then grounds afresh. */
+    boolean broken() {
+        return broken;
     }
 
     /** Ground actions instantiated so far. */
@@ -56,7 +62,13 @@ public final class GroundedProblem {
         }
         if (needsExtension) {
             extensions++;
-            grounder.extend(problem.init());
+            try {
+                grounder.extend(problem.init());
+            } catch (RuntimeException e) {
+                // a timeout or a size refusal left the fixpoint half done: no later goal may use it
+                broken = true;
+                throw e;
+            }
         }
         // Goal literals: a conjunction directly; otherwise the goal grounded with the static facts, and
         // if that leaves several disjuncts, one artificial operator per disjunct reaching a new goal fact.

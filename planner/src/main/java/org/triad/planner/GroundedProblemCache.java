@@ -90,6 +90,10 @@ public final class GroundedProblemCache {
         for (boolean quick : new boolean[] {true, false}) {
             for (int i = entries.size() - 1; i >= 0; i--) {
                 Entry e = entries.get(i);
+                if (e.grounding.broken()) {
+                    entries.remove(i);
+                    continue;
+                }
                 if (e.matches(domain, problem, fluents, hash, count, quick)) {
                     hits++;
                     entries.remove(i);

@@ -55,6 +55,8 @@ final class Grounder {
     private final Map<String, Double> numeric = new HashMap<>();
 
     final List<GroundOp> ops = new ArrayList<>();
+    /** The timeout of the thread grounding now (set again by every {@link #extend}). */
+    private GroundingLimits.Clock clock = GroundingLimits.clock();
     private final Normalizer normalizer;
     private final GroundFormula groundFormula;
     /** Lifted normal forms of quantified preconditions beyond this size are grounded per operator instead. */
@@ -222,6 +224,7 @@ final class Grounder {
 
     /** Marks facts as initially true and continues the fixpoint; returns whether new actions appeared. */
     boolean extend(List<Formula.Atom> init) {
+        clock = GroundingLimits.clock();
         int before = ops.size();
         for (Formula.Atom a : init) {
             int p = pred(a);
@@ -418,7 +421,9 @@ final class Grounder {
     }
 
     private void join(Schema s, int[] b, boolean[] done, int remaining) {
+        clock.tick();
         if (remaining == 0) {
+            checkFreeParameters(s, b);
             enumerateFree(s, b, 0);
             return;
         }
@@ -456,6 +461,18 @@ final class Grounder {
         return best;
     }
 
+    /** Refuses, before enumerating them, more instances of unbound parameters than the memory holds. */
+    private void checkFreeParameters(Schema s, int[] b) {
+        int free = 0;
+        for (int x : b) if (x < 0) free++;
+        if (free == 0) return;
+        int[] sizes = new int[free];
+        int k = 0;
+        for (int i = 0; i < b.length; i++) if (b[i] < 0) sizes[k++] = universe.ofTypes(s.params.get(i).types()).length;
+        GroundingLimits.check("actions of '" + s.action + "'", GroundingLimits.log10Combinations(sizes),
+                Math.max(1, GroundingLimits.maxActions() - ops.size()), free + " parameter" + (free == 1 ? "" : "s") + " no precondition binds, " + GroundingLimits.objects(sizes));
+    }
+
     private void enumerateFree(Schema s, int[] b, int from) {
         for (int i = from; i < b.length; i++) {
             if (b[i] < 0) {
@@ -481,6 +498,7 @@ final class Grounder {
     }
 
     private void instantiate(Schema s, int[] b) {
+        clock.tick();
         for (int i = 0; i < s.eq.length; i++) {
             boolean same = value(s.eq[i][0], b) == value(s.eq[i][1], b);
             if (same != s.eqPositive[i]) return;
@@ -557,6 +575,9 @@ final class Grounder {
     private void addOp(String action, String[] names, int[] pre, int[] neg, int[] add, int[] del, double cost, List<GroundOp.When> whens) {
         int[] a = sortedUnique(add);
         int[] d = minus(sortedUnique(del), a);
+        if (ops.size() >= GroundingLimits.maxActions()) {
+            GroundingLimits.check("actions", Math.log10(ops.size() + 1.0), GroundingLimits.maxActions(), "reachable instances, and more to come");
+        }
         ops.add(new GroundOp(action, names, pre, neg, a, d, cost, whens.isEmpty() ? null : whens.toArray(new GroundOp.When[0]), false));
         for (int f : a) enqueue(f);
         for (GroundOp.When w : whens) for (int f : w.add()) enqueue(f);

@@ -45,10 +45,10 @@ final class LazyGreedySearch {
 
     /** Stops with {@code LIMIT} after {@code evaluationLimit} heuristic evaluations. */
     BestFirstSearch.Result run(int[] init, int[] goalPos, int[] goalNeg, long evaluationLimit) {
-        return start(init, goalPos, goalNeg).resume(deadline, evaluationLimit);
+        return start(init, goalPos, goalNeg).resume(null, Long.MAX_VALUE, evaluationLimit);
     }
 
-    /** A search that can be interrupted (TIMEOUT at a given time) and resumed where it stopped. */
+    /** A search that can be interrupted (LIMIT at a work bound, TIMEOUT at the deadline) and resumed where it stopped. */
     Run start(int[] init, int[] goalPos, int[] goalNeg) {
         return new Run(init, goalPos, goalNeg);
     }
@@ -86,8 +86,11 @@ final class LazyGreedySearch {
             return lastProgress;
         }
 
-        /** Continues until a plan, exhaustion, {@code until} (TIMEOUT) or {@code evaluationLimit} evaluations in all (LIMIT). */
-        BestFirstSearch.Result resume(long until, long evaluationLimit) {
+        /**
+         * Continues until a plan, exhaustion, the deadline (TIMEOUT), {@code meter} reaching
+         * {@code workUntil} or {@code evaluationLimit} evaluations in all (LIMIT); {@code meter} may be null.
+         */
+        BestFirstSearch.Result resume(WorkMeter meter, long workUntil, long evaluationLimit) {
             while (true) {
                 int qi = -1;
                 for (int i = 0; i < nq; i++) {
@@ -95,10 +98,10 @@ final class LazyGreedySearch {
                 }
                 if (qi < 0) break;
                 // checked before the queue's turn is counted, so a resumed search continues exactly
-                if ((evaluated & 7) == 0 && System.nanoTime() > until) {
+                if ((evaluated & 7) == 0 && System.nanoTime() > deadline) {
                     return new BestFirstSearch.Result(BestFirstSearch.Outcome.TIMEOUT, null, null, expanded, evaluated);
                 }
-                if (evaluated >= evaluationLimit) {
+                if (evaluated >= evaluationLimit || (meter != null && meter.now() >= workUntil)) {
                     return new BestFirstSearch.Result(BestFirstSearch.Outcome.LIMIT, null, null, expanded, evaluated);
                 }
                 priority[qi]++;

@@ -81,6 +81,8 @@ final class Normalizer {
     }
 
     List<Map<String, String>> bindings(List<TypedName> vars, Map<String, String> base) {
+        checkBindings(universe, vars);
+        GroundingLimits.Clock clock = GroundingLimits.clock();
         List<Map<String, String>> out = new ArrayList<>();
         out.add(new HashMap<>(base));
         for (TypedName v : vars) {
@@ -88,6 +90,7 @@ final class Normalizer {
             List<Map<String, String>> next = new ArrayList<>();
             for (Map<String, String> m : out) {
                 for (int o : objs) {
+                    clock.tick();
                     Map<String, String> n = new HashMap<>(m);
                     n.put(v.name(), universe.names.get(o));
                     next.add(n);
@@ -205,5 +208,15 @@ final class Normalizer {
         List<String> args = new ArrayList<>(a.args().size());
         for (String t : a.args()) args.add(subst.getOrDefault(t, t));
         return new Formula.Atom(a.predicate(), args);
+    }
+
+    /** Refuses a quantifier whose bindings the memory cannot hold (forall ?x ?y ?z over thousands of objects). */
+    static void checkBindings(ObjectUniverse universe, List<TypedName> vars) {
+        int[] sizes = new int[vars.size()];
+        for (int i = 0; i < sizes.length; i++) sizes[i] = universe.ofTypes(vars.get(i).types()).length;
+        StringBuilder names = new StringBuilder();
+        for (TypedName v : vars) names.append(names.length() == 0 ? "" : " ").append(v.name());
+        GroundingLimits.check("bindings of the quantifier over " + names, GroundingLimits.log10Combinations(sizes), GroundingLimits.maxBindings(),
+                vars.size() + " variable" + (vars.size() == 1 ? "" : "s") + " over " + GroundingLimits.objects(sizes));
     }
 }

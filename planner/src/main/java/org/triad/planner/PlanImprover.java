@@ -1,7 +1,10 @@
 package org.triad.planner;
 
 /**
- * Makes a first plan shorter within a time budget, keeping the shortest valid plan found:
+ * Makes a first plan shorter within a budget of work ({@link WorkMeter}), keeping the shortest valid
+ * plan found; the budget is counted in work, not time, so the plan does not depend on the machine or
+ * its load, and the deadline only cuts improvement short (then {@link #timedOut()} says the plan is
+ * the best found so far):
  * <ol>
  * <li>action elimination ({@link PlanShortener}) on the first plan;</li>
  * <li>when the first plan came from the goal agenda: LAMA's first iteration (lazy greedy search,
@@ -10,12 +13,12 @@ package org.triad.planner;
  * <li>plan neighbourhood graph search ({@link PlanNeighbourhoodSearch}) with the smallest
  *     neighbourhood; if neither this nor the lazy search shortened the plan, the first plan is
  *     likely short already and the rest of the budget is left unused;</li>
- * <li>otherwise growing neighbourhoods for half of the remaining time, then restarts of weighted A*
+ * <li>otherwise growing neighbourhoods for half of the remaining work, then restarts of weighted A*
  *     (weights 5, 3, 2, preferred operators) that only look for plans shorter than the best so far,
  *     each result post-processed the same way, and neighbourhoods again with what is left.</li>
  * </ol>
  * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
- * extra time (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
+ * extra work (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
  * to apply actions, so they follow whatever action semantics it implements.
  */
 final class PlanImprover {
@@ -32,17 +35,25 @@ final class PlanImprover {
     private final long deadline;
     private final long[] effort;
     private final long searchEvaluations;
+    private final long workBudget;
+    private final WorkMeter meter;
+    private long workUntil;
     private boolean shortest;
+    private boolean timedOut;
     private PlanNeighbourhoodSearch neighbourhood;
 
     /**
-     * @param deadlineNanos {@link System#nanoTime()} when improving stops
+     * @param deadlineNanos {@link System#nanoTime()} when improving must stop (the timeout)
      * @param effort expanded and evaluated counters to add to
      * @param searchEvaluations heuristic evaluations allowed to each search (the lazy one and every
      *     restart): where a search needs many more than the first plan did, it rarely pays off
+     * @param workBudget work units ({@link WorkMeter}) improving may use
      */
-    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations) {
+    PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations,
+                 long workBudget) {
         this.searchEvaluations = searchEvaluations;
+        this.workBudget = workBudget;
+        this.meter = new WorkMeter(heuristic, successors);
         this.task = task;
         this.heuristic = heuristic;
         this.successors = successors;
@@ -53,12 +64,15 @@ final class PlanImprover {
     /** The shortest plan found, never longer than {@code plan} (a valid plan for the goal). */
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
         shortest = false;
+        timedOut = false;
+        workUntil = meter.now() + workBudget;
         int[] best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan);
         if (best.length == 0) return best;
         int first = best.length;
         if (tryLazyGreedy && !expired()) {
             Landmarks lms = new Landmarks(task, init, goalPos, deadline);
-            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).run(init, goalPos, goalNeg, searchEvaluations);
+            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).start(init, goalPos, goalNeg)
+                    .resume(meter, workUntil, searchEvaluations);
             count(r);
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
                 best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
@@ -66,27 +80,33 @@ final class PlanImprover {
         }
         // the cheap steps first: where neither the lazy search nor the smallest neighbourhood helps,
         // the first plan is likely short already and the rest of the budget is kept
-        best = neighbourhood(init, goalPos, goalNeg, best, deadline, false);
+        best = neighbourhood(init, goalPos, goalNeg, best, workUntil, false);
         if (shortest || best.length == first) return best;
-        // half of what is left, so that the restarts below get time when the neighbourhood stops helping
-        best = neighbourhood(init, goalPos, goalNeg, best, System.nanoTime() + (deadline - System.nanoTime()) / 2, true);
+        // half of what is left, so that the restarts below get work when the neighbourhood stops helping
+        long now = meter.now();
+        best = neighbourhood(init, goalPos, goalNeg, best, now + Math.max(0, workUntil - now) / 2, true);
         if (shortest) return best;
         for (int w : WEIGHTS) {
             if (shortest || expired() || best.length <= 1) break;
             BestFirstSearch.Result r = new BestFirstSearch(task, heuristic, successors, deadline).boundLength(best.length)
-                    .run(init, goalPos, goalNeg, 1, w, true, searchEvaluations);
+                    .limitWork(meter, workUntil).run(init, goalPos, goalNeg, 1, w, true, searchEvaluations);
             count(r);
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
             // exhausted under the bound: no shorter plan exists for any weight (a limit says nothing)
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
         }
-        // restarts that stopped at their evaluation limit leave time to larger neighbourhoods
-        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, deadline, true);
+        // restarts that stopped at their evaluation limit leave work to larger neighbourhoods
+        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, workUntil, true);
         return best;
     }
 
+    /** Whether the last {@link #improve} was cut short by the deadline: its plan is the best found so far. */
+    boolean timedOut() {
+        return timedOut;
+    }
+
     private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
-        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), deadline, true);
+        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), workUntil, true);
     }
 
     private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until, boolean grow) {
@@ -95,7 +115,8 @@ final class PlanImprover {
             int states = Math.min(NEIGHBOURHOOD_STATES, NEIGHBOURHOOD_FACTS / (init.length + 1));
             neighbourhood = new PlanNeighbourhoodSearch(successors, Math.max(1, states));
         }
-        plan = neighbourhood.improve(init, goalPos, goalNeg, plan, until, grow);
+        plan = neighbourhood.limitWork(meter, until).improve(init, goalPos, goalNeg, plan, deadline, grow);
+        timedOut |= neighbourhood.timedOut();
         // the neighbourhood was the whole reachable space: nothing shorter exists
         shortest |= neighbourhood.provedShortest();
         return plan;
@@ -104,10 +125,12 @@ final class PlanImprover {
     private void count(BestFirstSearch.Result r) {
         effort[0] += r.expanded();
         effort[1] += r.evaluated();
+        timedOut |= r.outcome() == BestFirstSearch.Outcome.TIMEOUT;
     }
 
     private boolean expired() {
-        return System.nanoTime() >= deadline;
+        if (System.nanoTime() >= deadline) timedOut = true;
+        return timedOut || meter.now() >= workUntil;
     }
 
     private static int[] shorter(int[] a, int[] b) {

@@ -18,6 +18,9 @@ final class PlanNeighbourhoodSearch {
     private final Successors successors;
     private final int maxStates;
     private long deadline;
+    private WorkMeter meter;
+    private long workUntil = Long.MAX_VALUE;
+    private boolean timedOut;
     private boolean complete;
     /** The last round stopped at {@link #MAX_EDGES}: a larger bound would explore the same states. */
     private boolean edgeLimited;
@@ -29,6 +32,18 @@ final class PlanNeighbourhoodSearch {
         this.successors = successors;
         this.maxStates = maxStates;
         this.bound = Math.min(FIRST_BOUND, maxStates);
+    }
+
+    /** Whether the last {@link #improve} stopped at the deadline (its plan is the best so far, not the end of its budget). */
+    boolean timedOut() {
+        return timedOut;
+    }
+
+    /** Makes later calls stop once {@code meter} reaches {@code until}: the budget that decides the plan, not time. */
+    PlanNeighbourhoodSearch limitWork(WorkMeter meter, long until) {
+        this.meter = meter;
+        this.workUntil = until;
+        return this;
     }
 
     /** Whether the last {@link #improve} explored the whole reachable space (its result is then a shortest plan). */
@@ -48,10 +63,11 @@ final class PlanNeighbourhoodSearch {
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long deadlineNanos, boolean grow) {
         deadline = deadlineNanos;
         complete = false;
+        timedOut = false;
         if (plan.length == 0) return plan;
-        while (System.nanoTime() < deadline) {
+        while (!(timedOut = System.nanoTime() >= deadline) && !workSpent()) {
             int[] shorter = round(init, goalPos, goalNeg, plan, bound);
-            if (shorter == null) return plan; // deadline
+            if (shorter == null) return plan; // deadline or work bound
             if (complete) return shorter;
             if (shorter.length < plan.length) {
                 plan = shorter;
@@ -84,7 +100,13 @@ final class PlanNeighbourhoodSearch {
         int edges = 0;
         int head = 0;
         while (head < tail && (head < sources || (hood.size() < bound && edges < MAX_EDGES))) {
-            if ((head & 63) == 0 && System.nanoTime() > deadline) return null;
+            if ((head & 63) == 0) {
+                if (workSpent()) return null;
+                if (System.nanoTime() > deadline) {
+                    timedOut = true;
+                    return null;
+                }
+            }
             int node = fifo[head++];
             int[] s = hood.state(node);
             int n = successors.applicable(s);
@@ -111,6 +133,10 @@ final class PlanNeighbourhoodSearch {
         edgeLimited = edges >= MAX_EDGES;
         // nodes were expanded in id order 0 .. head-1 (the fifo holds ids in creation order)
         return shortestPath(hood, head, edgeStart, edgeTo, edgeOp, goalPos, goalNeg);
+    }
+
+    private boolean workSpent() {
+        return meter != null && meter.now() >= workUntil;
     }
 
     private static int[] push(int[] fifo, int at, int node) {

@@ -18,13 +18,18 @@ final class PlanShortener {
         boolean changed = true;
         while (changed) {
             changed = false;
+            // the state before action i is carried along (the prefix before i never changes when i
+            // goes), so a pass replays each suffix once instead of the whole plan per action
+            int[] before = init;
             for (int i = 0; i < plan.length; i++) {
-                int[] candidate = eliminate(s, init, goalPos, goalNeg, plan, i);
+                int[] candidate = eliminate(s, before, goalPos, goalNeg, plan, i);
                 if (candidate != null) {
                     plan = candidate;
                     changed = true;
                     i--;
+                    continue;
                 }
+                before = s.apply(before, plan[i]);
             }
         }
         return plan;
@@ -56,9 +61,9 @@ final class PlanShortener {
         return k;
     }
 
-    private static int[] eliminate(Successors s, int[] init, int[] goalPos, int[] goalNeg, int[] plan, int skip) {
-        int[] state = init;
-        for (int i = 0; i < skip; i++) state = s.apply(state, plan[i]);
+    /** The plan without action {@code skip} (and the later ones it enables), or null; {@code before} is the state before it. */
+    private static int[] eliminate(Successors s, int[] before, int[] goalPos, int[] goalNeg, int[] plan, int skip) {
+        int[] state = before;
         List<Integer> kept = new ArrayList<>();
         for (int i = 0; i < skip; i++) kept.add(plan[i]);
         for (int i = skip + 1; i < plan.length; i++) {

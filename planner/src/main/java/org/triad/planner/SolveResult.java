@@ -37,6 +37,22 @@ public record SolveResult(Status status, PddlPlan plan, String message, Stats st
         return new SolveResult(Status.SOLVED, plan, "", stats);
     }
 
+    /** The message of a plan returned because the timeout cut improvement short ({@link #bestSoFar()}). */
+    public static final String BEST_SO_FAR = "time limit reached while improving the plan: the best plan found so far";
+
+    /**
+     * A plan found in time whose improvement the timeout cut short: valid, but perhaps longer than
+     * the engine's deterministic answer (which a longer timeout gives).
+     */
+    public static SolveResult bestSoFar(PddlPlan plan, Stats stats) {
+        return new SolveResult(Status.SOLVED, plan, BEST_SO_FAR, stats);
+    }
+
+    /** Whether this plan is the best found before the timeout ended improvement (see {@link #bestSoFar(PddlPlan, Stats)}). */
+    public boolean isBestSoFar() {
+        return status == Status.SOLVED && BEST_SO_FAR.equals(message);
+    }
+
     public static SolveResult unsolvable(String why, Stats stats) {
         return new SolveResult(Status.UNSOLVABLE, null, why, stats);
     }

@@ -9,6 +9,8 @@ final class Successors {
     private int epoch;
     private int[] buf = new int[64];
     private int count;
+    /** Operators considered and facts written, over all calls: machine-independent effort ({@link WorkMeter}). */
+    private long work;
 
     Successors(SearchTask t) {
         this.t = t;
@@ -29,10 +31,15 @@ final class Successors {
     }
 
     private void consider(int o) {
+        work++;
         for (int p : t.pre[o]) if (mark[p] != epoch) return;
         for (int p : t.neg[o]) if (mark[p] == epoch) return;
         if (count == buf.length) buf = Arrays.copyOf(buf, count * 2);
         buf[count++] = o;
+    }
+
+    long work() {
+        return work;
     }
 
     int get(int i) {
@@ -58,6 +65,7 @@ final class Successors {
             }
             del = Grounder.minus(del, add);
         }
+        work += state.length + add.length;
         int[] out = new int[state.length + add.length];
         int n = 0;
         int i = 0;

@@ -30,12 +30,20 @@ import org.triad.planner.pddl.Problem;
  *     the problem unsolvable), on {@link NegativeGoalCompilation}'s task when there are negative
  *     goals (so that the heuristics see them);</li>
  * </ol>
- * and finally makes the plan shorter: an exact search's plan, and an A* plan for a single open goal
- * (what RefArc plans per goal), only lose redundant actions; any other plan goes to {@link PlanImprover} (action elimination, the lazy search when the agenda found
- * the plan, plan neighbourhood graph search, length-bounded weighted A* restarts) for at most twice
- * the time the first plan took (grounding included), plus 20 ms for several goals, never beyond the
- * improvement cap (10 s by default) or the timeout. Grounding is not interruptible: the timeout
- * applies to search.
+ * and finally makes the plan shorter: an exact search's plan is shortest already, an A* plan for a
+ * single open goal (what RefArc plans per goal) only loses redundant actions; any other plan goes to {@link PlanImprover}
+ * (action elimination, the lazy search when the agenda found the plan, plan neighbourhood graph
+ * search, length-bounded weighted A* restarts) within a budget of work: twice the work to the first
+ * plan (a share for grounding included), plus a little for several goals, never beyond the
+ * improvement cap.
+ * <p>
+ * <b>Deterministic:</b> every budget that decides which plan is returned counts work
+ * ({@link WorkMeter}: heuristic evaluations, successor generation), never time, and every choice
+ * breaks ties by ids, so the same input gives the same plan on any machine and under any load. The
+ * timeout only ends planning: before the first plan it is a TIMEOUT, during improvement the best plan
+ * so far is returned and said to be one ({@link SolveResult#isBestSoFar()}). Grounding keeps the
+ * timeout too, and refuses a task too large for the heap before instantiating it
+ * ({@link GroundingLimits}).
  */
 public final class TriadEngine implements PddlPlanner {
     /** Heuristic evaluations allowed to one bounded stage before falling back. */
@@ -53,27 +61,41 @@ public final class TriadEngine implements PddlPlanner {
      */
     static final long GRAPH_SEARCH_WORK = 300_000;
 
-    /** Default cap on the time spent making a first plan shorter ({@link PlanImprover}). */
-    public static final Duration IMPROVEMENT_CAP = Duration.ofSeconds(10);
     /**
-     * Time granted to improving a plan of several goals, besides the time to the first plan (its
-     * grounding and search): enough for the lazy search and a few rounds of neighbourhood search on
-     * small tasks, while a planner embedded in a robot stays within a small factor of the first plan.
+     * Default cap on the work spent making a first plan shorter ({@link PlanImprover}), in
+     * {@link WorkMeter} units: about 5 s of one core (the time cap it replaces was 10 s of wall
+     * time, which on a loaded machine bought less).
      */
-    static final long IMPROVEMENT_EXTRA_NANOS = 20_000_000L;
+    public static final long IMPROVEMENT_CAP = 5 * WorkMeter.UNITS_PER_SECOND;
+    /**
+     * Work granted to improving a plan of several goals, besides the work to the first plan:
+     * enough for the lazy search and a few rounds of neighbourhood search on small tasks (about
+     * 20 ms), while a planner embedded in a robot stays within a small factor of the first plan.
+     */
+    static final long IMPROVEMENT_EXTRA_WORK = WorkMeter.UNITS_PER_SECOND / 50;
 
-    /** Improving may take this many times the time to the first plan (grounding included). */
-    static final long IMPROVEMENT_TIME_FACTOR = 2;
+    /** Improving may take this many times the work to the first plan (grounding's share included). */
+    static final long IMPROVEMENT_WORK_FACTOR = 2;
+    /**
+     * Grounding's share of the work to the first plan, per ground operator of the task searched: the
+     * improver's budget once grew with grounding time, which is large where a task is wide.
+     */
+    static final long GROUNDING_WORK_PER_OP = 200;
+    /**
+     * Work the goal agenda may use in all (about 3 s) before the complete portfolio takes over; each
+     * stage is further bounded by {@link #STAGE_EVALUATIONS}.
+     */
+    static final long AGENDA_WORK = 3 * WorkMeter.UNITS_PER_SECOND;
     /**
      * Each improving search (the lazy one, every restart) may evaluate this many times the states the
      * first plan needed, at least {@link #IMPROVEMENT_MIN_EVALUATIONS}: one that needs far more rarely
-     * pays off, and a failed one leaves time to the next.
+     * pays off, and a failed one leaves work to the next.
      */
     static final long IMPROVEMENT_EVALUATION_FACTOR = 5;
     static final long IMPROVEMENT_MIN_EVALUATIONS = 1000;
 
     private final GroundedProblemCache cache;
-    private final long improvementCapNanos;
+    private final long improvementCap;
 
     public TriadEngine() {
         this(new GroundedProblemCache(8));
@@ -84,13 +106,14 @@ public final class TriadEngine implements PddlPlanner {
     }
 
     /**
-     * @param improvementCap the most time spent after the first plan looking for a shorter one (on
-     *     top of the first plan's time, it is at most twice that time plus 20 ms; zero keeps the first
-     *     plan after removing redundant actions)
+     * @param improvementCap the most work ({@link WorkMeter} units, {@link #IMPROVEMENT_CAP} by default)
+     *     spent after the first plan looking for a shorter one (it is at most twice the work to the
+     *     first plan plus a little; zero keeps the first plan after removing redundant actions)
      */
-    public TriadEngine(GroundedProblemCache cache, Duration improvementCap) {
+    public TriadEngine(GroundedProblemCache cache, long improvementCap) {
+        if (improvementCap < 0) throw new IllegalArgumentException("negative improvement cap " + improvementCap);
         this.cache = cache;
-        this.improvementCapNanos = improvementCap.toNanos();
+        this.improvementCap = improvementCap;
     }
 
     public GroundedProblemCache cache() {
@@ -108,9 +131,14 @@ public final class TriadEngine implements PddlPlanner {
         long deadline = start + timeout.toNanos();
         GroundedProblem.Query q;
         try {
-            q = cache.get(domain, problem).query(problem);
+            q = GroundingLimits.withDeadline(deadline, () -> cache.get(domain, problem).query(problem));
+        } catch (GroundingTimeoutException e) {
+            return new SolveResult(SolveResult.Status.TIMEOUT, null, e.getMessage(), new SolveResult.Stats((System.nanoTime() - start) / 1e6, 0, 0, 0));
         } catch (PlanningInputException e) {
             return SolveResult.error(e.getMessage());
+        } catch (OutOfMemoryError e) {
+            // the estimates refuse what cannot fit; this is what they missed (the grounding is dropped)
+            return SolveResult.error(outOfMemory("grounding"));
         } catch (RuntimeException e) {
             return SolveResult.error("internal error while grounding: " + e);
         }
@@ -119,18 +147,31 @@ public final class TriadEngine implements PddlPlanner {
         if (q.unsolvableReason() != null) {
             return SolveResult.unreachable(q.unsolvableReason(), q.unreachable(), new SolveResult.Stats(groundMs, 0, 0, 0));
         }
-        SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
-        SearchTask.Scratch scratch = task.takeScratch();
         try {
-            return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
-        } finally {
-            task.returnScratch(scratch);
+            SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
+            SearchTask.Scratch scratch = task.takeScratch();
+            try {
+                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+            } finally {
+                task.returnScratch(scratch);
+            }
+        } catch (OutOfMemoryError e) {
+            // the search's states are garbage once this returns: the caller (a robot's planner
+            // component) fails this goal, not the JVM
+            return SolveResult.error(outOfMemory("search"));
         }
+    }
+
+    private static String outOfMemory(String phase) {
+        return "out of memory in " + phase + ": the task needs more than the memory given (" + (Runtime.getRuntime().maxMemory() >> 20) + " MB)";
     }
 
     private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
                               long searchStart, long deadline) {
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
+        WorkMeter meter = new WorkMeter(h, succ);
+        long workAtStart = meter.now();
+        long portfolioWork = 0;
         long[] effort = new long[2];
         int[] plan = null;
 
@@ -174,40 +215,55 @@ public final class TriadEngine implements PddlPlanner {
                 }
             }
         } else {
-            // the agenda may use a tenth of the time; the complete search gets the rest
-            long agendaDeadline = System.nanoTime() + (deadline - System.nanoTime()) / 10;
-            plan = agenda(q, new BestFirstSearch(task, h, succ, agendaDeadline), h, open, effort);
+            // the agenda may use a bounded amount of work (not time: its plan must not depend on the
+            // load); the complete search gets the rest of the time
+            plan = agenda(q, new BestFirstSearch(task, h, succ, deadline).limitWork(meter, meter.now() + AGENDA_WORK), h, open, effort);
             fromAgenda = plan != null;
         }
         if (plan == null && System.nanoTime() < deadline) {
+            long beforePortfolio = meter.now();
             NegativeGoalCompilation c = NegativeGoalCompilation.of(task, q.init(), q.goalPos(), q.goalNeg());
-            BestFirstSearch.Result r = c == null ? null
-                    : new FirstPlanPortfolio(c.task, new FfHeuristic(c.task), new Successors(c.task), deadline)
-                            .run(c.init, c.goalPos, new int[0], effort);
+            BestFirstSearch.Result r = null;
+            if (c != null) {
+                FirstPlanPortfolio compiled = new FirstPlanPortfolio(c.task, new FfHeuristic(c.task), new Successors(c.task), deadline);
+                r = compiled.run(c.init, c.goalPos, new int[0], effort);
+                portfolioWork += compiled.work();
+            }
             // the compiled plan is replayed on the task itself, which alone knows every effect and rule
             if (r != null && r.outcome() == BestFirstSearch.Outcome.FOUND && !solves(succ, q, r.plan())) r = null;
-            if (r == null) r = new FirstPlanPortfolio(task, h, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg(), effort);
+            if (r == null) {
+                FirstPlanPortfolio portfolio = new FirstPlanPortfolio(task, h, succ, deadline);
+                r = portfolio.run(q.init(), q.goalPos(), q.goalNeg(), effort);
+                // its own heuristics' work besides what the meter saw of h and succ
+                portfolioWork += portfolio.work() - (meter.now() - beforePortfolio);
+            }
             if (r.outcome() == BestFirstSearch.Outcome.FOUND) plan = r.plan();
             if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) {
                 return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, effort));
             }
         }
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
-        if (exact || singleGoalAstar || improvementCapNanos <= 0) {
+        boolean bestSoFar = false;
+        if (exact) {
+            // a shortest plan: nothing to eliminate (and elimination is quadratic in its length:
+            // a chain of 100,000 places)
+        } else if (singleGoalAstar || improvementCap <= 0) {
             plan = PlanShortener.shorten(task, succ, q.init(), q.goalPos(), q.goalNeg(), plan);
         } else {
-            long now = System.nanoTime();
-            long firstPlan = now - searchStart + (long) (groundMs * 1e6);
-            // a single goal's A* plan is near shortest: no extra time, so small goals stay fast
-            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_NANOS;
-            long budget = Math.min(improvementCapNanos, IMPROVEMENT_TIME_FACTOR * firstPlan + extra);
-            long until = Math.min(deadline, now + budget);
+            long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
+            // a single goal's A* plan is near shortest: no extra work, so small goals stay fast
+            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK;
+            long budget = Math.min(improvementCap, IMPROVEMENT_WORK_FACTOR * firstPlan + extra);
             long evaluations = Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]);
-            plan = new PlanImprover(task, h, succ, until, effort, evaluations).improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
+            PlanImprover improver = new PlanImprover(task, h, succ, deadline, effort, evaluations, budget);
+            plan = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
+            bestSoFar = improver.timedOut();
         }
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());
-        return SolveResult.solved(new PddlPlan(steps), stats(groundMs, searchStart, effort));
+        PddlPlan result = new PddlPlan(steps);
+        return bestSoFar ? SolveResult.bestSoFar(result, stats(groundMs, searchStart, effort))
+                : SolveResult.solved(result, stats(groundMs, searchStart, effort));
     }
 
     private static boolean solves(Successors succ, GroundedProblem.Query q, int[] plan) {

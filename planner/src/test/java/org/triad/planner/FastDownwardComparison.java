@@ -20,17 +20,22 @@ import org.triad.planner.pddl.Problem;
  * (the domain file is found as Fast Downward's driver finds it). With {@code --fd-cache}, Fast
  * Downward runs once per problem: its plan and wall seconds are kept as {@code DIR/FOLDER/PROBLEM.pddl.plan}
  * and {@code .seconds} ("timeout" when it found none) and reused by later runs. The last line gives
- * the median length ratio over the problems both solved. See planner/BENCHMARK.md.
+ * the median length ratio over the problems both solved. With {@code --repeat N}, Triad runs N more
+ * times idle and N times with a CPU load beside it (busy threads, twice the cores, in this JVM) and a
+ * column gives the lengths of those runs ("all L" when every run gave L): the engine's budgets count
+ * work, so they must all be the same. See planner/BENCHMARK.md.
  */
 public final class FastDownwardComparison {
     public static void main(String[] args) throws Exception {
         Path fdCache = null;
-        if (args.length > 1 && args[0].equals("--fd-cache")) {
-            fdCache = Path.of(args[1]).toAbsolutePath();
+        int repeat = 0;
+        while (args.length > 1 && (args[0].equals("--fd-cache") || args[0].equals("--repeat"))) {
+            if (args[0].equals("--fd-cache")) fdCache = Path.of(args[1]).toAbsolutePath();
+            else repeat = Integer.parseInt(args[1]);
             args = java.util.Arrays.copyOfRange(args, 2, args.length);
         }
         if (args.length < 4) {
-            System.err.println("usage: FastDownwardComparison [--fd-cache DIR] FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR FOLDER/PROBLEM.pddl...");
+            System.err.println("usage: FastDownwardComparison [--fd-cache DIR] [--repeat N] FAST_DOWNWARD_PY TIMEOUT_S CORPUS_DIR FOLDER/PROBLEM.pddl...");
             System.exit(2);
         }
         List<Double> ratios = new ArrayList<>();
@@ -41,8 +46,10 @@ public final class FastDownwardComparison {
         System.out.printf("Java %s, %d cores, load average at start %.1f, cap %.0f s per planner and problem%n%n",
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout);
-        System.out.println("| problem | Triad s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |");
-        System.out.println("|---|---|---|---|---|---|---|---|");
+        String repeatHeader = repeat > 0 ? " Triad lengths, " + repeat + " idle / " + repeat + " loaded |" : "";
+        System.out.println("| problem | Triad s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |" + repeatHeader);
+        System.out.println("|---|---|---|---|---|---|---|---|" + (repeat > 0 ? "---|" : ""));
+        int varying = 0;
         List<String> notes = new ArrayList<>();
         for (int i = 3; i < args.length; i++) {
             Path problemFile = root.resolve(args[i]);
@@ -83,7 +90,36 @@ public final class FastDownwardComparison {
             String[] f = check(domain, problem, fdPlan);
             String ratio = t[0].equals("-") || f[0].equals("-") ? "-" : String.format("%.2f", Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
             if (!ratio.equals("-")) ratios.add(Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
-            System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio);
+            String repeated = "";
+            if (repeat > 0) {
+                List<String> idle = new ArrayList<>();
+                List<String> loaded = new ArrayList<>();
+                List<String> solve = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
+                        SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout));
+                for (int k = 0; k < 2 * repeat; k++) {
+                    boolean withLoad = k >= repeat;
+                    Files.deleteIfExists(triadPlan);
+                    CpuLoad load = withLoad ? new CpuLoad(2 * Runtime.getRuntime().availableProcessors()) : null;
+                    try {
+                        run(work, "triad-repeat.log", timeout, solve);
+                    } finally {
+                        if (load != null) load.stop();
+                    }
+                    (withLoad ? loaded : idle).add(check(domain, problem, triadPlan)[0]);
+                }
+                List<String> all = new ArrayList<>(idle);
+                all.addAll(loaded);
+                all.add(t[0]);
+                // "-": no plan within the cap (a slow run on a loaded machine), not another plan
+                List<String> lengths = all.stream().filter(x -> !x.equals("-")).distinct().toList();
+                long capped = all.stream().filter(x -> x.equals("-")).count();
+                boolean same = lengths.size() <= 1;
+                if (!same) varying++;
+                repeated = " " + (same && !lengths.isEmpty() ? "all " + lengths.get(0) + (capped > 0 ? " (" + capped + " of " + all.size() + " runs stopped at the cap)" : "")
+                        : String.join(" ", idle) + " / " + String.join(" ", loaded)) + " |";
+            }
+            System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%s%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio,
+                    repeated);
             if (t[0].equals("-")) notes.add(args[i] + ": " + (Double.isNaN(triadS) ? "killed at the cap" : firstLine(work.resolve("triad.log"))));
         }
         java.util.Collections.sort(ratios);
@@ -93,10 +129,35 @@ public final class FastDownwardComparison {
             long above = ratios.stream().filter(r -> r > 1.1 + 1e-9).count();
             System.out.printf("%nmedian length ratio %.2f over %d problems both solved; %d above 1.1%n", median, n, above);
         }
+        if (repeat > 0) System.out.printf("%nproblems whose %d repeated runs (idle and loaded) gave more than one length: %d%n", 2 * repeat, varying);
         if (!notes.isEmpty()) {
             System.out.println();
             System.out.println("Triad without a plan:");
             for (String n : notes) System.out.println("- " + n);
+        }
+    }
+
+    /** Busy threads beside the measured process, so that it runs on a loaded machine. */
+    private static final class CpuLoad {
+        private final java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
+        private final List<Thread> threads = new ArrayList<>();
+
+        CpuLoad(int n) {
+            for (int i = 0; i < n; i++) {
+                Thread t = new Thread(() -> {
+                    long x = 1;
+                    while (!stop.get()) x = x * 6364136223846793005L + 1;
+                    if (x == 42) System.out.print("");
+                });
+                t.setDaemon(true);
+                t.start();
+                threads.add(t);
+            }
+        }
+
+        void stop() throws InterruptedException {
+            stop.set(true);
+            for (Thread t : threads) t.join();
         }
     }
 

@@ -14,7 +14,7 @@ import org.triad.planner.pddl.Problem;
 /** The first-plan portfolio and the compilation of negative goals it searches on. */
 class FirstPlanPortfolioTest {
     /** Gates to clear in order: clearing one needs the previous one cleared (a negative precondition). */
-    private static final Domain GATES = PddlParser.parseDomain("""
+    static final Domain GATES = PddlParser.parseDomain("""
             (define (domain gates) (:requirements :strips :negative-preconditions)
               (:predicates (pending ?g) (after ?g ?h) (first ?g) (armed))
               (:action arm :parameters () :precondition (not (armed)) :effect (armed))
@@ -24,7 +24,7 @@ class FirstPlanPortfolioTest {
                  :effect (and (not (pending ?g)) (not (armed)))))
             """, "gates.pddl");
 
-    private static final Problem THREE_GATES = PddlParser.parseProblem("""
+    static final Problem THREE_GATES = PddlParser.parseProblem("""
             (define (problem three) (:domain gates) (:objects a b c)
               (:init (pending a) (pending b) (pending c) (first a) (after b a) (after c b))
               (:goal (and (not (pending a)) (not (pending b)) (not (pending c)))))
@@ -93,10 +93,13 @@ class FirstPlanPortfolioTest {
         NegativeGoalCompilation c = NegativeGoalCompilation.of(q.task(), q.init(), q.goalPos(), q.goalNeg());
         BestFirstSearch.Result whole = new LazyGreedySearch(new FfHeuristic(c.task), null, new Successors(c.task), deadline())
                 .run(c.init, c.goalPos, new int[0]);
-        LazyGreedySearch.Run run = new LazyGreedySearch(new FfHeuristic(c.task), null, new Successors(c.task), deadline())
-                .start(c.init, c.goalPos, new int[0]);
-        assertEquals(BestFirstSearch.Outcome.TIMEOUT, run.resume(System.nanoTime() - 1, Long.MAX_VALUE).outcome());
-        BestFirstSearch.Result resumed = run.resume(deadline(), Long.MAX_VALUE);
+        FfHeuristic h = new FfHeuristic(c.task);
+        Successors succ = new Successors(c.task);
+        WorkMeter meter = new WorkMeter(h, succ);
+        LazyGreedySearch.Run run = new LazyGreedySearch(h, null, succ, deadline()).start(c.init, c.goalPos, new int[0]);
+        assertEquals(BestFirstSearch.Outcome.LIMIT, run.resume(meter, meter.now() + 1, Long.MAX_VALUE).outcome());
+        assertEquals(BestFirstSearch.Outcome.LIMIT, run.resume(meter, meter.now() + 50, Long.MAX_VALUE).outcome());
+        BestFirstSearch.Result resumed = run.resume(meter, Long.MAX_VALUE, Long.MAX_VALUE);
         assertEquals(BestFirstSearch.Outcome.FOUND, resumed.outcome());
         org.junit.jupiter.api.Assertions.assertArrayEquals(whole.plan(), resumed.plan());
         assertEquals(whole.evaluated(), resumed.evaluated());

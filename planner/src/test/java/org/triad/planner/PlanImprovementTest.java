@@ -152,7 +152,7 @@ class PlanImprovementTest {
         BestFirstSearch.Result first = new BestFirstSearch(t, h, succ, Long.MAX_VALUE).run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, false, Long.MAX_VALUE);
         assertNotNull(first.plan());
         long[] effort = new long[2];
-        int[] improved = new PlanImprover(t, h, succ, System.nanoTime() + Duration.ofSeconds(2).toNanos(), effort, 100_000)
+        int[] improved = new PlanImprover(t, h, succ, Long.MAX_VALUE, effort, 100_000, 2 * WorkMeter.UNITS_PER_SECOND)
                 .improve(q.init(), q.goalPos(), q.goalNeg(), first.plan(), true);
         assertTrue(improved.length <= first.plan().length, improved.length + " > " + first.plan().length);
         List<PddlStep> steps = new ArrayList<>();
@@ -166,9 +166,20 @@ class PlanImprovementTest {
     void improverPastItsDeadlineStillEliminatesRedundantActions() {
         Setup s = roadsSetup("(at c)");
         int[] plan = s.ops("pick x a", "move a b", "drop x b", "move b c");
-        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), System.nanoTime() - 1, new long[2], 1000)
-                .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, true);
+        PlanImprover late = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), System.nanoTime() - 1, new long[2], 1000,
+                Long.MAX_VALUE);
+        int[] result = late.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, true);
         assertArrayEquals(s.ops("move a b", "move b c"), result);
+        assertTrue(late.timedOut(), "the plan is the best found before the deadline, and says so");
+    }
+
+    @Test
+    void improverWithinItsWorkBudgetIsNotCutShort() {
+        Setup s = roadsSetup("(at c)");
+        PlanImprover improver = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE, new long[2], 1000, 1);
+        int[] result = improver.improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), s.ops("move a d", "move d e", "move e c"), true);
+        assertEquals(3, result.length, "a budget of one unit leaves the detour as it is");
+        assertFalse(improver.timedOut(), "a spent work budget is the deterministic end, not a timeout");
     }
 
     @Test
@@ -176,21 +187,21 @@ class PlanImprovementTest {
         Setup s = roadsSetup("(at c)");
         int[] shortest = s.ops("move a b", "move b c");
         long[] effort = new long[2];
-        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE, effort, 1000)
+        int[] result = new PlanImprover(s.task(), new FfHeuristic(s.task()), s.successors(), Long.MAX_VALUE, effort, 1000, Long.MAX_VALUE)
                 .improve(s.query().init(), s.query().goalPos(), s.query().goalNeg(), shortest, true);
         assertArrayEquals(shortest, result);
         assertTrue(effort[1] > 0, "the lazy search ran");
         Setup reached = roadsSetup("(at a)");
         assertArrayEquals(new int[0], new PlanImprover(reached.task(), new FfHeuristic(reached.task()), reached.successors(), Long.MAX_VALUE,
-                new long[2], 1000).improve(reached.query().init(), reached.query().goalPos(), reached.query().goalNeg(), new int[0], true));
+                new long[2], 1000, Long.MAX_VALUE).improve(reached.query().init(), reached.query().goalPos(), reached.query().goalNeg(), new int[0], true));
     }
 
     @Test
     void engineWithImprovementIsNoLongerThanWithout() {
         Domain d = TestProblems.domain("ipc/logistics00/domain.pddl");
         Problem p = TestProblems.problem("ipc/logistics00/problogistics-10-0.pddl");
-        SolveResult plain = new TriadEngine(new GroundedProblemCache(1), Duration.ZERO).solve(d, p, Duration.ofSeconds(30));
-        SolveResult improved = new TriadEngine(new GroundedProblemCache(1), Duration.ofSeconds(2)).solve(d, p, Duration.ofSeconds(30));
+        SolveResult plain = new TriadEngine(new GroundedProblemCache(1), 0).solve(d, p, Duration.ofSeconds(30));
+        SolveResult improved = new TriadEngine(new GroundedProblemCache(1), 2 * WorkMeter.UNITS_PER_SECOND).solve(d, p, Duration.ofSeconds(30));
         assertTrue(plain.isSolved() && improved.isSolved());
         assertTrue(improved.plan().length() <= plain.plan().length(), improved.plan().length() + " > " + plain.plan().length());
         assertTrue(PlanValidator.validate(d, p, improved.plan()).valid());
