@@ -112,9 +112,6 @@ class VdaFaultsTest {
     }
 
     @Test
-    @org.junit.jupiter.api.Disabled("flaky, a defect found 2026-11-23: in 2 of 3 runs on an idle machine, after the broker restart the robot "
-            + "reconnected within 1 s (mosquitto.log) and finished its order, yet master control saw it CONNECTIONBROKEN until the "
-            + "task aborted: its re-announced ONLINE is lost or overtaken by its last will; see the closing note of session 3")
     void brokerRestartedMidTaskTheTaskCompletesAndNoOrderRunsTwice() throws Exception {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 8, dir);
                 MasterControl master = MasterControl.connect(broker.url(), RESTART_TIMEOUTS, masterLog::add)) {
