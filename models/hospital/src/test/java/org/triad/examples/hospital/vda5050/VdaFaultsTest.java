@@ -144,18 +144,38 @@ class VdaFaultsTest {
     void robotRejectingAnOrderFailsTheActionWithItsErrorAndEndsInRemoteOperation() throws Exception {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
                 MasterControl master = MasterControl.connect(broker.url(), TEST_TIMEOUTS, masterLog::add)) {
-            // the master believes the robot is in storage (a stale situation); the robot stands in the lobby
+            // the models believe in a corridor from the lobby straight into ward 3 that the building does not have
             HospitalSimulation morning = new HospitalSimulation(1);
             State believed = new HospitalStateProvider(morning.courier(), morning.building()).currentState().toBuilder()
-                    .value(Atom.of("Courier", "loc"), morning.objects().room("storage")).build();
+                    .fact(Atom.of("Building", "adj", morning.objects().room("lobby"), morning.objects().room("ward3"))).build();
             ModelAgvActors actors = new ModelAgvActors(HospitalSchema.SCHEMA, believed, master.agv("courier-1"));
             RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), actors)
                     .run(new GoTo(morning.objects().room("ward3")), statuses::add);
             assertTrue(failures().lines().findFirst().orElse("")
-                    .contains("rejected by AGV triad/courier-1: noRouteError: the order starts at storage but the AGV is at lobby"), failures());
+                    .contains("rejected by AGV triad/courier-1: noRouteError: no corridor from lobby to ward3"), failures());
             assertAbortedWithRemoteOperation(run, r -> r.contains("noRouteError"));
             assertEquals(4, robot.lines("rejected order").size(), robot.output());
             assertEquals(List.of(), robot.lines("accepted order"));
+        }
+        assertEquals(List.of(), monitor.violations());
+    }
+
+    @Test
+    void aSecondRunOnTheSameRobotStartsWhereTheRobotReportsItIsNotWhereTheSituationSays() throws Exception {
+        try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
+                MasterControl master = MasterControl.connect(broker.url(), TEST_TIMEOUTS, masterLog::add)) {
+            HospitalSimulation morning = new HospitalSimulation(1);
+            State situation = new HospitalStateProvider(morning.courier(), morning.building()).currentState(); // robot in the lobby
+            for (String room : List.of("ward1", "ward3")) {
+                // each run starts from the situation file, as './triad run --robots vda5050:' does
+                ModelAgvActors actors = new ModelAgvActors(HospitalSchema.SCHEMA, situation, master.agv("courier-1"));
+                RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), actors)
+                        .run(new GoTo(morning.objects().room(room)), statuses::add);
+                assertEquals(RefArcRun.Outcome.COMPLETED, run.outcome(), run.log() + "\n" + robot.output());
+            }
+            assertEquals("", failures(), "no action failed");
+            assertEquals(List.of(), robot.lines("rejected order"), "the second run planned from ward1, where the robot reported itself");
+            assertTrue(robot.lines("accepted order").get(robot.lines("accepted order").size() - 1).contains("ward3"), robot.output());
         }
         assertEquals(List.of(), monitor.violations());
     }
