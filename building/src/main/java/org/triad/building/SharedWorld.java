@@ -33,10 +33,13 @@ public final class SharedWorld {
     private final Map<Atom, Object> world = new LinkedHashMap<>();
     /** The robot actor's values of the situation the world started from: where model robots start. */
     private final Map<Atom, Object> robotStart = new LinkedHashMap<>();
-    private final Map<Atom, Long> changedBy = new LinkedHashMap<>();
     private long version;
+    private boolean seeded;
 
-    /** A building whose world starts as {@code situation} says (its robot part is where {@link #modelRobot}s start). */
+    /**
+     * A building whose world is {@code situation}'s until something starts it otherwise ({@link #startAs},
+     * or the first robot with a platform, see {@link #observing}); its robot part is where {@link #modelRobot}s start.
+     */
     public SharedWorld(AppSchema schema, State situation) {
         this.schema = Objects.requireNonNull(schema, "schema");
         objects.putAll(situation.objects());
@@ -112,7 +115,7 @@ public final class SharedWorld {
         } else {
             world.put(a, value);
         }
-        changedBy.put(a, ++version);
+        version++;
     }
 
     /** Runs {@code step} with the world held, so that a robot's look-and-act is one step for the fleet. */
@@ -167,7 +170,49 @@ public final class SharedWorld {
      * (as its platform reports it) is written here.
      */
     public FleetRobot observing(FleetRobot robot) {
-        return robot instanceof BuildingMember m && m.world() == this ? robot : new ObservedRobot(this, robot);
+        if (robot instanceof BuildingMember m && m.world() == this) {
+            return robot;
+        }
+        seedFrom(robot);
+        return new ObservedRobot(this, robot);
+    }
+
+    /**
+     * The world starts as observed: the first robot with a platform that joins before the world was
+     * started otherwise (see {@link #startAs}) replaces the situation's world part by what its platform
+     * reports (a robot that cannot be read now leaves it as it is).
+     */
+    private void seedFrom(FleetRobot robot) {
+        State reported;
+        synchronized (lock) {
+            if (seeded || version > 0) {
+                return;
+            }
+        }
+        try {
+            reported = robot.stateSource().currentState();
+        } catch (Exception e) {
+            return;
+        }
+        startAs(reported);
+    }
+
+    /**
+     * Starts the world as {@code situation}'s world part says, unless it was started already (by an
+     * explicit situation, or by the first robot that reported its world) or has changed since: the first
+     * word on the building's world wins. Returns whether this one did.
+     */
+    public boolean startAs(State situation) {
+        synchronized (lock) {
+            if (seeded || version > 0) {
+                return false;
+            }
+            situation.objects().forEach(objects::putIfAbsent);
+            replaceWorld(situation);
+            seeded = true;
+            version = 0;
+            return true;
+        }
     }
 
     /** A robot's own state source seen through this building. */

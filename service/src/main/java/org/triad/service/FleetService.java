@@ -7,11 +7,13 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
+import org.triad.building.Claims;
 import org.triad.refarc.GoalPlanner;
 import org.triad.refarc.Status;
 import org.triad.refarc.fleet.FleetRobot;
@@ -46,6 +48,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  */
 public final class FleetService implements AutoCloseable {
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** A robot on which this many tasks in a row aborted is taken out of dispatch until the operator puts it back. */
+    public static final int ABORTS_IN_A_ROW = 3;
 
     private final TaskCatalog catalog;
     private final TaskStore store;
@@ -55,10 +59,23 @@ public final class FleetService implements AutoCloseable {
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
     /** Queued task ids in queue order (= submission order; a retried task keeps its place in front). */
-    private final TreeSet<Long> queue = new TreeSet<>();
+    private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
+    /** Queued task ids in dispatch order: higher priority first, then submission order (a retried task keeps its place). */
+    private final TreeSet<Long> queue = new TreeSet<>(
+            java.util.Comparator.comparingInt((Long id) -> -priorities.getOrDefault(id, 0)).thenComparing(id -> id));
     private final Map<Long, String> preferred = new ConcurrentHashMap<>();
     /** The checked submissions of tasks not yet finished, read by request threads for their descriptions. */
     private final Map<Long, TaskCall> calls = new ConcurrentHashMap<>();
+    /** Which running task holds which objects: a task waits while another holds an object it names. */
+    private final Claims claims;
+    /** The objects each queued or running task claims. */
+    private final Map<Long, Set<String>> claimed = new ConcurrentHashMap<>();
+    /** Queued tasks that waited for an object, with the holder they waited for last. */
+    private final Map<Long, Claims.Holder> waitedFor = new ConcurrentHashMap<>();
+    private final List<Long> refusedToPublish = new CopyOnWriteArrayList<>();
+    /** When each running task was dispatched, and how long the last completed tasks took: for the expected start and finish. */
+    private final Map<Long, Instant> dispatchedAt = new ConcurrentHashMap<>();
+    private final java.util.ArrayDeque<java.time.Duration> durations = new java.util.ArrayDeque<>();
     private final Thread dispatcher;
     private volatile boolean running = true;
     private volatile long dispatchNanos;
@@ -69,6 +86,7 @@ public final class FleetService implements AutoCloseable {
         this.store = store;
         this.estimator = planner;
         this.clock = clock;
+        this.claims = new Claims(catalog.schema());
         GoalPlanner goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
         for (FleetRobot r : robots) {
             lanes.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
@@ -91,6 +109,7 @@ public final class FleetService implements AutoCloseable {
             try {
                 TaskCall call = catalog.check(request(t));
                 calls.put(t.id(), call);
+                priorities.put(t.id(), t.priority());
                 queue.add(t.id());
                 if (t.preferredRobot() != null) {
                     preferred.put(t.id(), t.preferredRobot());
@@ -128,9 +147,11 @@ public final class FleetService implements AutoCloseable {
         Instant now = clock.instant();
         TaskRow row;
         synchronized (lock) {
-            row = store.insertTask(call.task(), call.args().toString(), now);
-            store.insertEvent(row.id(), "submitted", null, "submitted: " + call.describe(), now);
+            row = store.insertTask(call.task(), call.args().toString(), call.priority(), now);
+            store.insertEvent(row.id(), "submitted", null, "submitted: " + call.describe() + (call.priority() == 0 ? "" : " with priority "
+                    + call.priority()), now);
             calls.put(row.id(), call);
+            priorities.put(row.id(), call.priority());
             queue.add(row.id());
             lock.notifyAll();
         }
@@ -142,7 +163,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     public List<TaskView> tasks(TaskState state, int limit) {
-        return store.tasks(state, limit).stream().map(t -> view(t, false)).toList();
+        Map<Long, Instant[]> forecast = forecast();
+        return store.tasks(state, limit).stream().map(t -> view(t, false, forecast)).toList();
     }
 
     /** Cancels a queued or aborted task at once, a running one at its robot's next step. */
@@ -154,6 +176,7 @@ public final class FleetService implements AutoCloseable {
                 case QUEUED, ABORTED -> {
                     queue.remove(id);
                     preferred.remove(id);
+                    waitedFor.remove(id);
                     store.resolveRequests(id, "cancelled", now);
                     store.insertEvent(id, "cancelled", t.robot(), "cancelled by " + who, now);
                     store.updateTask(id, TaskState.CANCELLED, t.robot(), null, "cancelled by " + who, now);
@@ -212,6 +235,7 @@ public final class FleetService implements AutoCloseable {
             store.resolveRequests(t.id(), kind, now);
             store.insertEvent(t.id(), kind, robot, text, now);
             store.updateTask(t.id(), TaskState.QUEUED, null, robot, null, now);
+            priorities.putIfAbsent(t.id(), t.priority());
             queue.add(t.id());
             if (robot == null) {
                 preferred.remove(t.id());
@@ -293,9 +317,10 @@ public final class FleetService implements AutoCloseable {
     private void dispatchLoop() {
         while (running) {
             Choice choice;
+            List<Long> nowWaiting = new ArrayList<>();
             synchronized (lock) {
-                choice = next();
-                if (choice == null) {
+                choice = next(nowWaiting);
+                if (choice == null && nowWaiting.isEmpty()) {
                     try {
                         lock.wait(500);
                     } catch (InterruptedException e) {
@@ -304,9 +329,17 @@ public final class FleetService implements AutoCloseable {
                     continue;
                 }
             }
+            nowWaiting.forEach(id -> publishTask(id, false));
+            if (choice == null) {
+                continue;
+            }
             long start = System.nanoTime();
             try {
                 dispatch(choice, start);
+                for (Long refused : refusedToPublish) {
+                    refusedToPublish.remove(refused);
+                    publishTask(refused, false);
+                }
             } catch (ServiceError e) {
                 // the database failed: the task stays queued in the database and is tried again
                 sleepQuietly(500);
@@ -320,20 +353,40 @@ public final class FleetService implements AutoCloseable {
         }
     }
 
-    /** The oldest queued task some idle online robot may take, with those robots. */
-    private Choice next() {
+    /**
+     * The oldest queued task some idle online robot may take, with those robots. A task one of whose
+     * objects another running task holds waits (it keeps its place; later tasks may go first); its
+     * reason says for what, and is recorded once per holder in {@code nowWaiting}.
+     */
+    private Choice next(List<Long> nowWaiting) {
         List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle()).toList();
         if (idle.isEmpty()) {
             return null;
         }
         for (Long id : queue) {
+            TaskCall call = calls.get(id);
+            Optional<Claims.Holder> held = claims.holder(id, claimed(id, call));
+            if (held.isPresent()) {
+                if (!held.get().equals(waitedFor.put(id, held.get()))) {
+                    String why = "waiting for " + held.get().describe();
+                    Instant now = clock.instant();
+                    store.insertEvent(id, "waiting", null, why, now);
+                    store.updateTask(id, TaskState.QUEUED, null, preferred.get(id), why, now);
+                    nowWaiting.add(id);
+                }
+                continue;
+            }
             String want = preferred.get(id);
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
             if (!candidates.isEmpty()) {
-                return new Choice(id, calls.get(id), candidates);
+                return new Choice(id, call, candidates);
             }
         }
         return null;
+    }
+
+    private Set<String> claimed(long id, TaskCall call) {
+        return claimed.computeIfAbsent(id, k -> claims.claimedBy(call.task(), call.values()));
     }
 
     private void dispatch(Choice choice, long start) {
@@ -342,11 +395,13 @@ public final class FleetService implements AutoCloseable {
         RobotLane best = null;
         int bestCost = Integer.MAX_VALUE;
         StringBuilder why = new StringBuilder();
+        Map<RobotLane, State> seen = new LinkedHashMap<>();
         for (RobotLane lane : choice.candidates()) {
             String estimate;
             int cost;
             try {
                 State s = lane.stateSource().currentState();
+                seen.put(lane, s);
                 if (first == null || first.isSatisfiedIn(s)) {
                     cost = 0;
                     estimate = "0 actions";
@@ -373,8 +428,20 @@ public final class FleetService implements AutoCloseable {
             if (!queue.contains(choice.task()) || !best.idle() || !best.online()) {
                 return;
             }
+            if (claims.holder(choice.task(), claimed(choice.task(), choice.call())).isPresent()) {
+                return; // taken meanwhile: the next round says what it waits for
+            }
+            Claims.Holder waited = waitedFor.remove(choice.task());
+            GoalInstance last = task.goals().isEmpty() ? null : task.goals().get(task.goals().size() - 1);
+            if (waited != null && last != null && seen.get(best) != null && last.isSatisfiedIn(seen.get(best))) {
+                refuse(choice.task(), "refused: while it waited for " + waited.describe() + ", that task ended and " + last.describe()
+                        + " holds now for " + best.name() + "; the task was not executed, so nothing is done twice", now);
+                return;
+            }
             queue.remove(choice.task());
             preferred.remove(choice.task());
+            claims.take(choice.task(), best.name(), claimed(choice.task(), choice.call()));
+            dispatchedAt.put(choice.task(), now);
             String text = "dispatched to " + best.name() + (first == null ? "" : "; first goal " + first.describe() + " from each robot's state: " + why);
             store.insertEvent(choice.task(), "dispatched", best.name(), text, now);
             store.updateTask(choice.task(), TaskState.RUNNING, best.name(), null, null, now);
@@ -402,6 +469,16 @@ public final class FleetService implements AutoCloseable {
             if (status instanceof Status.TaskCompleted) {
                 synchronized (lock) {
                     store.updateTask(taskId, TaskState.COMPLETED, lane.name(), null, null, now);
+                    Instant began = dispatchedAt.remove(taskId);
+                    if (began != null) {
+                        durations.addLast(java.time.Duration.between(began, now));
+                        if (durations.size() > 50) {
+                            durations.removeFirst();
+                        }
+                    }
+                    claims.release(taskId);
+                    claimed.remove(taskId);
+                    lane.completed();
                     lane.finished(taskId);
                     lock.notifyAll();
                 }
@@ -416,7 +493,16 @@ public final class FleetService implements AutoCloseable {
                         queue.add(taskId);
                     } else {
                         abort(taskId, lane.name(), a.goal().describe(), a.reason(), now);
+                        int inARow = lane.aborted();
+                        if (inARow >= ABORTS_IN_A_ROW && lane.online()) {
+                            String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: "
+                                    + a.reason() + "; put it back online when it is fixed";
+                            lane.takeOut(why);
+                            store.insertEvent(taskId, "robot_out", lane.name(), "robot " + lane.name() + " " + why, now);
+                        }
                     }
+                    claims.release(taskId); // what the robot may still carry is gone from the world for the others
+                    dispatchedAt.remove(taskId);
                     lane.finished(taskId);
                     lock.notifyAll();
                 }
@@ -428,6 +514,16 @@ public final class FleetService implements AutoCloseable {
         }
         publishTask(taskId, false);
         publish(new LiveEvent("robot", view(lane)));
+    }
+
+    /** Ends a queued task without executing it, for {@code reason}; call with the lock held. */
+    private void refuse(long taskId, String reason, Instant now) {
+        queue.remove(taskId);
+        preferred.remove(taskId);
+        claimed.remove(taskId);
+        store.insertEvent(taskId, "refused", null, reason, now);
+        store.updateTask(taskId, TaskState.REFUSED, null, null, reason, now);
+        refusedToPublish.add(taskId);
     }
 
     private void abort(long taskId, String robot, String goal, String reason, Instant now) {
@@ -447,7 +543,52 @@ public final class FleetService implements AutoCloseable {
         return store.task(id).orElseThrow(() -> new ServiceError(404, "not-found", "no task " + id));
     }
 
+    /**
+     * Expected start and finish of the running and queued tasks: each takes the median wall-clock time
+     * of the last 50 completed tasks (dispatch to completion); queued tasks go, in dispatch order, to
+     * whichever online robot is expected free first. Waiting for claims and preferred robots are not
+     * modelled; empty until a task has completed or while no robot is online.
+     */
+    private Map<Long, Instant[]> forecast() {
+        synchronized (lock) {
+            if (durations.isEmpty()) {
+                return Map.of();
+            }
+            List<java.time.Duration> sorted = new ArrayList<>(durations);
+            sorted.sort(null);
+            java.time.Duration d = sorted.get(sorted.size() / 2);
+            Instant now = clock.instant();
+            Map<Long, Instant[]> out = new java.util.HashMap<>();
+            java.util.PriorityQueue<Instant> free = new java.util.PriorityQueue<>();
+            for (RobotLane l : lanes.values()) {
+                Optional<Long> running = l.currentTask();
+                if (running.isPresent()) {
+                    Instant began = dispatchedAt.getOrDefault(running.get(), now);
+                    Instant end = began.plus(d).isBefore(now) ? now : began.plus(d);
+                    out.put(running.get(), new Instant[] { began, end });
+                    if (l.online()) {
+                        free.add(end);
+                    }
+                } else if (l.online()) {
+                    free.add(now);
+                }
+            }
+            if (!free.isEmpty()) {
+                for (Long id : queue) {
+                    Instant start = free.poll();
+                    out.put(id, new Instant[] { start, start.plus(d) });
+                    free.add(start.plus(d));
+                }
+            }
+            return out;
+        }
+    }
+
     private TaskView view(TaskRow t, boolean withEvents) {
+        return view(t, withEvents, t.state() == TaskState.QUEUED || t.state() == TaskState.RUNNING ? forecast() : Map.of());
+    }
+
+    private TaskView view(TaskRow t, boolean withEvents, Map<Long, Instant[]> forecast) {
         List<EventView> events = withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null;
         JsonNode args;
         try {
@@ -456,8 +597,10 @@ public final class FleetService implements AutoCloseable {
             args = JSON.createObjectNode();
         }
         String call = Optional.ofNullable(calls.get(t.id())).map(TaskCall::describe).orElseGet(() -> callText(t));
+        Instant[] expected = t.state() == TaskState.QUEUED || t.state() == TaskState.RUNNING ? forecast.get(t.id()) : null;
         return new TaskView(t.id(), t.task(), args, call, t.state().json(), t.robot(), t.preferredRobot(), t.reason(), Views.time(t.submittedAt()),
-                Views.time(t.updatedAt()), events);
+                Views.time(t.updatedAt()), events, t.priority(), expected == null ? null : Views.time(expected[0]),
+                expected == null ? null : Views.time(expected[1]));
     }
 
     private static String callText(TaskRow t) {
@@ -475,7 +618,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     private RobotView view(RobotLane l) {
-        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent());
+        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent(),
+                l.online() ? null : l.offlineReason());
     }
 
     private TaskView publishTask(long id, boolean withEvents) {
@@ -492,7 +636,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     private static TaskView withoutEvents(TaskView v) {
-        return new TaskView(v.id(), v.task(), v.args(), v.call(), v.state(), v.robot(), v.preferredRobot(), v.reason(), v.submittedAt(), v.updatedAt(), null);
+        return new TaskView(v.id(), v.task(), v.args(), v.call(), v.state(), v.robot(), v.preferredRobot(), v.reason(), v.submittedAt(), v.updatedAt(), null,
+                v.priority(), v.expectedStart(), v.expectedFinish());
     }
 
     private void publishRequests() {

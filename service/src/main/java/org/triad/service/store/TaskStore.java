@@ -97,17 +97,22 @@ public final class TaskStore implements AutoCloseable {
     // ---- tasks --------------------------------------------------------------------------------
 
     public synchronized TaskRow insertTask(String task, String argsJson, Instant now) {
+        return insertTask(task, argsJson, 0, now);
+    }
+
+    public synchronized TaskRow insertTask(String task, String argsJson, int priority, Instant now) {
         try (PreparedStatement s = connection.prepareStatement(
-                "INSERT INTO task(name, args, state, submitted_at, updated_at) VALUES (?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
+                "INSERT INTO task(name, args, state, submitted_at, updated_at, priority) VALUES (?, ?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
             s.setString(1, task);
             s.setString(2, argsJson);
             s.setString(3, TaskState.QUEUED.name());
             s.setTimestamp(4, Timestamp.from(now));
             s.setTimestamp(5, Timestamp.from(now));
+            s.setInt(6, priority);
             s.executeUpdate();
             try (ResultSet k = s.getGeneratedKeys()) {
                 k.next();
-                return new TaskRow(k.getLong(1), task, argsJson, TaskState.QUEUED, null, null, null, now, now);
+                return new TaskRow(k.getLong(1), task, argsJson, TaskState.QUEUED, null, null, null, now, now, priority);
             }
         } catch (SQLException e) {
             throw unavailable(e);
@@ -153,7 +158,7 @@ public final class TaskStore implements AutoCloseable {
                 while (r.next()) {
                     out.add(new TaskRow(r.getLong("id"), r.getString("name"), r.getString("args"), TaskState.valueOf(r.getString("state")),
                             r.getString("robot"), r.getString("preferred_robot"), r.getString("reason"), instant(r, "submitted_at"),
-                            instant(r, "updated_at")));
+                            instant(r, "updated_at"), r.getInt("priority")));
                 }
             }
             return out;
