@@ -251,13 +251,23 @@ public final class RemoteAgv implements FailureExplaining {
                 return;
             }
         }
-        // silent: no state since its last state or its (re)connection; a frozen AGV is not waited for
-        await(() -> state == null || !abandonedOrder.equals(state.orderId())
-                || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving()
-                || System.nanoTime() - Math.max(stateNanos, connectionNanos) > seconds(timeouts.stateSeconds()), timeouts.actionSeconds());
+        // silent: no state for stateSeconds since the wait began (or since its last state or (re)connection, if later);
+        // a frozen AGV is not waited for, but one that was only slow (a loaded machine) gets that long to speak again
+        long began = System.nanoTime();
+        await(() -> abandonedOrderEnded()
+                || System.nanoTime() - Math.max(began, Math.max(stateNanos, connectionNanos)) > seconds(timeouts.stateSeconds()), timeouts.actionSeconds());
         synchronized (lock) {
-            abandonedOrder = null;
+            // kept until the AGV shows it ended: the next order after a refusal ("still executing") waits again
+            if (abandonedOrderEnded()) {
+                abandonedOrder = null;
+            }
         }
+    }
+
+    /** Whether the AGV's state shows the abandoned order ended (or another order running); call with the lock held. */
+    private boolean abandonedOrderEnded() {
+        return state == null || !abandonedOrder.equals(state.orderId())
+                || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
     }
 
     /** Whether the AGV is (or comes) online; otherwise records why not. */

@@ -30,7 +30,7 @@ import org.triad.vda5050.protocol.Topic;
  * after which nothing more comes does.
  */
 class RemoteAgvLivenessTest {
-    private static final VdaTimeouts TIMEOUTS = new VdaTimeouts(10, 2, 30, 3);
+    private static final VdaTimeouts TIMEOUTS = new VdaTimeouts(30, 10, 30, 5); // generous: a loaded machine delays states
     private MosquittoBroker broker;
 
     @BeforeEach

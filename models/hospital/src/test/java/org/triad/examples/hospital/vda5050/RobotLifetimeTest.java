@@ -28,6 +28,7 @@ class RobotLifetimeTest {
         Path dir = Path.of("target", "vda5050", "RobotLifetimeTest").toAbsolutePath();
         Files.createDirectories(dir);
         Path log = dir.resolve("courier-7.log");
+        Files.deleteIfExists(log); // a previous run's 'ONLINE' must not count
         List<ConnectionState> seen = new CopyOnWriteArrayList<>();
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
                 MqttLink watcher = MqttLink.connect(broker.url(), "lifetime-watcher", null, line -> { }, 10, 5)) {
