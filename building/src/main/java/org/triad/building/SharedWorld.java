@@ -78,7 +78,9 @@ public final class SharedWorld {
     public State stateFor(State robotOwn) {
         synchronized (lock) {
             robotOwn.objects().forEach(objects::putIfAbsent);
-            State.Builder b = State.builder().objects(objects.values());
+            // the robot's own objects win over the building's same-named ones: a platform's generated
+            // executor takes its own typed objects (a Room), not the situation's generic ones
+            State.Builder b = State.builder().objects(robotOwn.objects().values()).objects(objects.values()); // the first of a name wins
             world.forEach(b::value);
             robotOwn.values().forEach((a, v) -> {
                 if (!isWorld(a)) {
@@ -207,7 +209,7 @@ public final class SharedWorld {
             if (seeded || version > 0) {
                 return false;
             }
-            situation.objects().forEach(objects::putIfAbsent);
+            objects.putAll(situation.objects());
             replaceWorld(situation);
             seeded = true;
             version = 0;

@@ -319,7 +319,13 @@ public final class FleetService implements AutoCloseable {
             Choice choice;
             List<Long> nowWaiting = new ArrayList<>();
             synchronized (lock) {
-                choice = next(nowWaiting);
+                try {
+                    choice = next(nowWaiting);
+                } catch (RuntimeException e) {
+                    // the database failed while recording a wait: the dispatcher lives on and tries again
+                    System.err.println("triad serve: dispatch: " + e.getMessage());
+                    choice = null;
+                }
                 if (choice == null && nowWaiting.isEmpty()) {
                     try {
                         lock.wait(500);

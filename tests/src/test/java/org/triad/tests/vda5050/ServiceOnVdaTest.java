@@ -35,7 +35,7 @@ class ServiceOnVdaTest {
 
 	private TriadService.Options options(String robots) {
 		return new TriadService.Options(HOSPITAL, List.of(robots), null, dir.resolve("db"), null, "127.0.0.1", 0,
-				Map.of(AccessTokens.SUBMIT_ENV, "s-token", AccessTokens.OPERATOR_ENV, "o-token"));
+				Map.of(AccessTokens.SUBMIT_ENV, "submit-token-for-tests", AccessTokens.OPERATOR_ENV, "operator-token-for-tests"));
 	}
 
 	private static TaskView awaitEnd(TriadService s, long id) throws InterruptedException {
