@@ -7,4 +7,6 @@ val triadVersion: String by project
 
 dependencies {
     api("org.triad:triad-refarc:$triadVersion")
+    testImplementation("org.triad:triad-dsl:$triadVersion") // the tests load the hospital's models
+    testImplementation("org.triad:triad-generator:$triadVersion")
 }

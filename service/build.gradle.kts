@@ -9,6 +9,7 @@ dependencies {
     api("org.triad:triad-dsl:$triadVersion")
     api("org.triad:triad-generator:$triadVersion")
     api("org.triad:triad-refarc:$triadVersion")
+    api("org.triad:triad-building:$triadVersion")
     api("org.triad:triad-runtime:$triadVersion")
     api("io.javalin:javalin:6.3.0")
     api("com.fasterxml.jackson.core:jackson-databind:2.17.2")

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
 
+import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.security.ClientCredentials;
 
 /**
@@ -109,19 +110,45 @@ final class ApplicationLauncher {
 		} catch (IOException e) {
 			throw new UncheckedIOException("cannot read " + classpathFile + ": " + e.getMessage(), e);
 		}
+		// the child ends with this process: stopped by the hook below, or (SIGKILL) by its own LauncherWatch
+		cmd.add("-D" + LauncherWatch.PROPERTY + "=" + ProcessHandle.current().pid());
 		cmd.add(main);
 		cmd.addAll(args);
 		try {
 			Process process = new ProcessBuilder(cmd).redirectInput(ProcessBuilder.Redirect.INHERIT).start();
+			Thread stopChild = new Thread(() -> stop(process), "stop-" + command);
+			Runtime.getRuntime().addShutdownHook(stopChild);
 			Thread errors = copy(process.getErrorStream(), err);
 			copy(process.getInputStream(), out).join();
 			errors.join();
-			return process.waitFor();
+			int code = process.waitFor();
+			try {
+				Runtime.getRuntime().removeShutdownHook(stopChild);
+			} catch (IllegalStateException e) {
+				// shutting down: the hook runs and finds the child ended
+			}
+			return code;
 		} catch (IOException e) {
 			throw new UncheckedIOException("cannot start " + main + ": " + e.getMessage(), e);
 		} catch (InterruptedException e) {
 			Thread.currentThread().interrupt();
 			throw new IllegalStateException("interrupted while " + main + " ran", e);
+		}
+	}
+
+	/** SIGTERM (the child's shutdown hooks run: a robot reports OFFLINE), SIGKILL after 10 s. */
+	private static void stop(Process child) {
+		if (!child.isAlive()) {
+			return;
+		}
+		child.destroy();
+		try {
+			if (!child.waitFor(10, java.util.concurrent.TimeUnit.SECONDS)) {
+				child.destroyForcibly().waitFor(5, java.util.concurrent.TimeUnit.SECONDS);
+			}
+		} catch (InterruptedException e) {
+			child.destroyForcibly();
+			Thread.currentThread().interrupt();
 		}
 	}
 

@@ -27,7 +27,8 @@ public final class ServeCommand implements Callable<Integer> {
 
 	@Option(names = "--robots", paramLabel = "SCHEME:ARG", split = "\\s+",
 			description = { "the fleet, repeatable: sim:N[@SPEED|@max] (the application's simulated robots, if it has them),",
-					"dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K] (any application), or a binding's scheme;",
+					"dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K] (any application),",
+					"vda5050:tcp://HOST:PORT[,wait=S] (the hospital couriers ONLINE on that broker), or a binding's scheme;",
 					"default: sim:1 if the application has simulated robots, else dry:1" })
 	private List<String> robots = List.of();
 

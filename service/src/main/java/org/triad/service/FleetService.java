@@ -7,11 +7,13 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
+import org.triad.building.Claims;
 import org.triad.refarc.GoalPlanner;
 import org.triad.refarc.Status;
 import org.triad.refarc.fleet.FleetRobot;
@@ -48,6 +50,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  */
 public final class FleetService implements AutoCloseable {
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** A robot on which this many tasks in a row aborted is taken out of dispatch until the operator puts it back. */
+    public static final int ABORTS_IN_A_ROW = 3;
 
     private final TaskCatalog catalog;
     private final TaskStore store;
@@ -56,11 +60,26 @@ public final class FleetService implements AutoCloseable {
     private final Map<String, RobotLane> lanes = new LinkedHashMap<>();
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
-    /** Queued task ids in queue order (= submission order; a retried task keeps its place in front). */
-    private final TreeSet<Long> queue = new TreeSet<>();
+    private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
+    /**
+     * Queued task ids in dispatch order: higher priority first, then submission order (a retried task
+     * keeps its place). A task's priority is put in {@code priorities} before it joins.
+     */
+    private final TreeSet<Long> queue = new TreeSet<>(
+            java.util.Comparator.comparingInt((Long id) -> -priorities.getOrDefault(id, 0)).thenComparing(id -> id));
     private final Map<Long, String> preferred = new ConcurrentHashMap<>();
     /** The checked submissions of tasks not yet finished, read by request threads for their descriptions. */
     private final Map<Long, TaskCall> calls = new ConcurrentHashMap<>();
+    /** Which running task holds which objects: a task waits while another holds an object it names. */
+    private final Claims claims;
+    /** The objects each queued or running task claims. */
+    private final Map<Long, Set<String>> claimed = new ConcurrentHashMap<>();
+    /** Queued tasks that waited for an object, with the holder they waited for last. */
+    private final Map<Long, Claims.Holder> waitedFor = new ConcurrentHashMap<>();
+    private final List<Long> refusedToPublish = new CopyOnWriteArrayList<>();
+    /** When each running task was dispatched, and how long the last completed tasks took: for the expected start and finish. */
+    private final Map<Long, Instant> dispatchedAt = new ConcurrentHashMap<>();
+    private final java.util.ArrayDeque<java.time.Duration> durations = new java.util.ArrayDeque<>();
     private final Thread dispatcher;
     private volatile boolean running = true;
     private volatile long dispatchNanos;
@@ -86,6 +105,7 @@ public final class FleetService implements AutoCloseable {
         this.estimator = planner;
         this.clock = clock;
         this.lease = lease;
+        this.claims = new Claims(catalog.schema());
         GoalPlanner goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
         for (FleetRobot r : robots) {
             lanes.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
@@ -134,6 +154,7 @@ public final class FleetService implements AutoCloseable {
             try {
                 TaskCall call = catalog.check(request(t));
                 calls.put(t.id(), call);
+                priorities.put(t.id(), t.priority());
                 queue.add(t.id());
                 if (t.preferredRobot() != null) {
                     preferred.put(t.id(), t.preferredRobot());
@@ -162,6 +183,7 @@ public final class FleetService implements AutoCloseable {
             if (!queue.contains(t.id())) {
                 try {
                     calls.computeIfAbsent(t.id(), id -> catalog.check(request(t)));
+                    priorities.put(t.id(), t.priority());
                     queue.add(t.id());
                     if (t.preferredRobot() != null) {
                         preferred.put(t.id(), t.preferredRobot());
@@ -227,7 +249,8 @@ public final class FleetService implements AutoCloseable {
         Instant now = clock.instant().truncatedTo(java.time.temporal.ChronoUnit.MILLIS);
         TaskStore.Submitted stored;
         synchronized (lock) {
-            stored = store.submitTask(call.task(), call.args().toString(), now, "submitted: " + call.describe(), key);
+            stored = store.submitTask(call.task(), call.args().toString(), call.priority(), now, "submitted: " + call.describe()
+                    + (call.priority() == 0 ? "" : " with priority " + call.priority()), key);
             if (!stored.created()) {
                 TaskRow t = stored.task();
                 if (!t.task().equals(call.task()) || !t.args().equals(call.args().toString())) {
@@ -237,11 +260,12 @@ public final class FleetService implements AutoCloseable {
                 return new Submission(view(t, true), false);
             }
             calls.put(stored.task().id(), call);
+            priorities.put(stored.task().id(), call.priority());
             queue.add(stored.task().id());
             lock.notifyAll();
         }
         // the answer is built from what was written, without reading it back: one commit per submission
-        TaskView v = view(stored.task(), List.of(view(stored.event())));
+        TaskView v = view(stored.task(), List.of(view(stored.event())), forecast());
         if (!listeners.isEmpty()) {
             Map<String, Object> data = new LinkedHashMap<>();
             data.put("task", withoutEvents(v));
@@ -256,7 +280,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     public List<TaskView> tasks(TaskState state, int limit) {
-        return store.tasks(state, limit).stream().map(t -> view(t, false)).toList();
+        Map<Long, Instant[]> forecast = forecast();
+        return store.tasks(state, limit).stream().map(t -> view(t, null, forecast)).toList();
     }
 
     /** Cancels a queued or aborted task at once, a running one at its robot's next step. */
@@ -268,6 +293,7 @@ public final class FleetService implements AutoCloseable {
                 case QUEUED, ABORTED -> {
                     queue.remove(id);
                     preferred.remove(id);
+                    waitedFor.remove(id);
                     store.resolveRequests(id, "cancelled", now);
                     store.insertEvent(id, "cancelled", t.robot(), "cancelled by " + who, now);
                     store.updateTask(id, TaskState.CANCELLED, t.robot(), null, "cancelled by " + who, now);
@@ -329,6 +355,7 @@ public final class FleetService implements AutoCloseable {
             store.resolveRequests(t.id(), kind, now);
             store.insertEvent(t.id(), kind, robot, text, now);
             store.updateTask(t.id(), TaskState.QUEUED, null, robot, null, now);
+            priorities.putIfAbsent(t.id(), t.priority());
             queue.add(t.id());
             if (robot == null) {
                 preferred.remove(t.id());
@@ -411,6 +438,7 @@ public final class FleetService implements AutoCloseable {
         Backoff backoff = new Backoff();
         while (running) {
             Choice choice;
+            List<Long> nowWaiting = new ArrayList<>();
             try {
                 if (!leaseHeld()) {
                     sleepQuietly(DispatchLease.POLL_MILLIS);
@@ -420,8 +448,8 @@ public final class FleetService implements AutoCloseable {
                     if (System.nanoTime() - lastSync > DispatchLease.POLL_MILLIS * 1_000_000L) {
                         sync();
                     }
-                    choice = next();
-                    if (choice == null) {
+                    choice = next(nowWaiting);
+                    if (choice == null && nowWaiting.isEmpty()) {
                         backoff.reset();
                         try {
                             lock.wait(DispatchLease.POLL_MILLIS);
@@ -438,12 +466,25 @@ public final class FleetService implements AutoCloseable {
             }
             long start = System.nanoTime();
             try {
+                nowWaiting.forEach(id -> publishTask(id, false));
+                if (choice == null) {
+                    continue;
+                }
                 dispatch(choice, start);
                 backoff.reset();
+                for (Long refused : refusedToPublish) {
+                    refusedToPublish.remove(refused);
+                    publishTask(refused, false);
+                }
             } catch (ServiceError e) {
                 // the database failed: the task stays queued in the database and is tried again
                 sleepQuietly(backoff.next());
             } catch (RuntimeException e) {
+                if (choice == null) {
+                    // publishing a wait failed: the task keeps waiting and is published with its next change
+                    System.err.println("triad serve: dispatch: " + e);
+                    continue;
+                }
                 synchronized (lock) {
                     queue.remove(choice.task());
                     abort(choice.task(), null, null, "the service could not dispatch the task: " + e, clock.instant());
@@ -512,20 +553,40 @@ public final class FleetService implements AutoCloseable {
         }
     }
 
-    /** The oldest queued task some idle online robot may take, with those robots. */
-    private Choice next() {
+    /**
+     * The first queued task (in dispatch order) some idle online robot may take, with those robots. A task
+     * one of whose objects another running task holds waits (it keeps its place; later tasks may go
+     * first); its reason says for what, and is recorded once per holder in {@code nowWaiting}.
+     */
+    private Choice next(List<Long> nowWaiting) {
         List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle()).toList();
         if (idle.isEmpty()) {
             return null;
         }
         for (Long id : queue) {
+            TaskCall call = calls.get(id);
+            Optional<Claims.Holder> held = claims.holder(id, claimed(id, call));
+            if (held.isPresent()) {
+                if (!held.get().equals(waitedFor.put(id, held.get()))) {
+                    String why = "waiting for " + held.get().describe();
+                    Instant now = clock.instant();
+                    store.insertEvent(id, "waiting", null, why, now);
+                    store.updateTask(id, TaskState.QUEUED, null, preferred.get(id), why, now);
+                    nowWaiting.add(id);
+                }
+                continue;
+            }
             String want = preferred.get(id);
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
             if (!candidates.isEmpty()) {
-                return new Choice(id, calls.get(id), candidates);
+                return new Choice(id, call, candidates);
             }
         }
         return null;
+    }
+
+    private Set<String> claimed(long id, TaskCall call) {
+        return claimed.computeIfAbsent(id, k -> claims.claimedBy(call.task(), call.values()));
     }
 
     private void dispatch(Choice choice, long start) {
@@ -534,11 +595,13 @@ public final class FleetService implements AutoCloseable {
         RobotLane best = null;
         int bestCost = Integer.MAX_VALUE;
         StringBuilder why = new StringBuilder();
+        Map<RobotLane, State> seen = new LinkedHashMap<>();
         for (RobotLane lane : choice.candidates()) {
             String estimate;
             int cost;
             try {
                 State s = lane.stateSource().currentState();
+                seen.put(lane, s);
                 if (first == null || first.isSatisfiedIn(s)) {
                     cost = 0;
                     estimate = "0 actions";
@@ -565,11 +628,24 @@ public final class FleetService implements AutoCloseable {
             if (!queue.contains(choice.task()) || !best.idle() || !best.online()) {
                 return;
             }
+            if (claims.holder(choice.task(), claimed(choice.task(), choice.call())).isPresent()) {
+                return; // taken meanwhile: the next round says what it waits for
+            }
+            Claims.Holder waited = waitedFor.get(choice.task());
+            GoalInstance last = task.goals().isEmpty() ? null : task.goals().get(task.goals().size() - 1);
+            if (waited != null && last != null && seen.get(best) != null && last.isSatisfiedIn(seen.get(best))) {
+                refuse(choice.task(), "refused: while it waited for " + waited.describe() + ", that task ended and " + last.describe()
+                        + " holds now for " + best.name() + "; the task was not executed, so nothing is done twice", now);
+                return;
+            }
             String text = "dispatched to " + best.name() + (first == null ? "" : "; first goal " + first.describe() + " from each robot's state: " + why);
             // the database first: if it fails the task stays queued, in memory and on disk
             store.dispatchTask(choice.task(), best.name(), text, now);
+            waitedFor.remove(choice.task());
             queue.remove(choice.task());
             preferred.remove(choice.task());
+            claims.take(choice.task(), best.name(), claimed(choice.task(), choice.call()));
+            dispatchedAt.put(choice.task(), now);
             best.start(choice.task(), task);
             dispatchNanos += System.nanoTime() - start;
             dispatches++;
@@ -622,6 +698,21 @@ public final class FleetService implements AutoCloseable {
                     if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && dispatching) {
                         queue.add(taskId);
                     }
+                    Instant began = dispatchedAt.remove(taskId);
+                    // what the robot may still carry after an abort is gone from the world for the others
+                    claims.release(taskId);
+                    if (status instanceof Status.TaskCompleted) {
+                        if (began != null) {
+                            durations.addLast(java.time.Duration.between(began, now));
+                            if (durations.size() > 50) {
+                                durations.removeFirst();
+                            }
+                        }
+                        claimed.remove(taskId);
+                        lane.completed();
+                    } else if (status instanceof Status.TaskAborted a && stop == null) {
+                        takeOutIfFailing(lane, taskId, a.reason(), now);
+                    }
                     lane.finished(taskId);
                     lock.notifyAll();
                 }
@@ -636,6 +727,33 @@ public final class FleetService implements AutoCloseable {
         } catch (ServiceError e) {
             // the pages catch up at the next event once the database answers again
         }
+    }
+
+    /** Takes a robot on which {@link #ABORTS_IN_A_ROW} tasks in a row aborted out of dispatch, with the reason; call with the lock held. */
+    private void takeOutIfFailing(RobotLane lane, long taskId, String reason, Instant now) {
+        int inARow = lane.aborted();
+        if (inARow >= ABORTS_IN_A_ROW && lane.online()) {
+            String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: " + reason
+                    + "; put it back online when it is fixed";
+            lane.takeOut(why);
+            try {
+                store.insertEvent(taskId, "robot_out", lane.name(), "robot " + lane.name() + " " + why, now);
+            } catch (ServiceError e) {
+                // the robot is out all the same; the operator page shows it from the robot's view
+                System.err.println("triad serve: " + e.getMessage());
+            }
+        }
+    }
+
+    /** Ends a queued task without executing it, for {@code reason}; call with the lock held. */
+    private void refuse(long taskId, String reason, Instant now) {
+        store.insertEvent(taskId, "refused", null, reason, now);
+        store.updateTask(taskId, TaskState.REFUSED, null, null, reason, now);
+        queue.remove(taskId);
+        preferred.remove(taskId);
+        claimed.remove(taskId);
+        waitedFor.remove(taskId);
+        refusedToPublish.add(taskId);
     }
 
     private void abort(long taskId, String robot, String goal, String reason, Instant now) {
@@ -655,11 +773,53 @@ public final class FleetService implements AutoCloseable {
         return store.task(id).orElseThrow(() -> new ServiceError(404, "not-found", "no task " + id));
     }
 
-    private TaskView view(TaskRow t, boolean withEvents) {
-        return view(t, withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null);
+    /**
+     * Expected start and finish of the running and queued tasks: each takes the median wall-clock time
+     * of the last 50 completed tasks (dispatch to completion); queued tasks go, in dispatch order, to
+     * whichever online robot is expected free first. Waiting for claims and preferred robots are not
+     * modelled; empty until a task has completed or while no robot is online.
+     */
+    private Map<Long, Instant[]> forecast() {
+        synchronized (lock) {
+            if (durations.isEmpty()) {
+                return Map.of();
+            }
+            List<java.time.Duration> sorted = new ArrayList<>(durations);
+            sorted.sort(null);
+            java.time.Duration d = sorted.get(sorted.size() / 2);
+            Instant now = clock.instant();
+            Map<Long, Instant[]> out = new java.util.HashMap<>();
+            java.util.PriorityQueue<Instant> free = new java.util.PriorityQueue<>();
+            for (RobotLane l : lanes.values()) {
+                Optional<Long> current = l.currentTask();
+                if (current.isPresent()) {
+                    Instant began = dispatchedAt.getOrDefault(current.get(), now);
+                    Instant end = began.plus(d).isBefore(now) ? now : began.plus(d);
+                    out.put(current.get(), new Instant[] { began, end });
+                    if (l.online()) {
+                        free.add(end);
+                    }
+                } else if (l.online()) {
+                    free.add(now);
+                }
+            }
+            if (!free.isEmpty()) {
+                for (Long id : queue) {
+                    Instant start = free.poll();
+                    out.put(id, new Instant[] { start, start.plus(d) });
+                    free.add(start.plus(d));
+                }
+            }
+            return out;
+        }
     }
 
-    private TaskView view(TaskRow t, List<EventView> events) {
+    private TaskView view(TaskRow t, boolean withEvents) {
+        return view(t, withEvents ? store.events(t.id()).stream().map(FleetService::view).toList() : null,
+                t.state() == TaskState.QUEUED || t.state() == TaskState.RUNNING ? forecast() : Map.of());
+    }
+
+    private TaskView view(TaskRow t, List<EventView> events, Map<Long, Instant[]> forecast) {
         JsonNode args;
         try {
             args = JSON.readTree(t.args());
@@ -667,8 +827,10 @@ public final class FleetService implements AutoCloseable {
             args = JSON.createObjectNode();
         }
         String call = Optional.ofNullable(calls.get(t.id())).map(TaskCall::describe).orElseGet(() -> callText(t));
+        Instant[] expected = t.state() == TaskState.QUEUED || t.state() == TaskState.RUNNING ? forecast.get(t.id()) : null;
         return new TaskView(t.id(), t.task(), args, call, t.state().json(), t.robot(), t.preferredRobot(), t.reason(), Views.time(t.submittedAt()),
-                Views.time(t.updatedAt()), events);
+                Views.time(t.updatedAt()), events, t.priority(), expected == null ? null : Views.time(expected[0]),
+                expected == null ? null : Views.time(expected[1]));
     }
 
     private static String callText(TaskRow t) {
@@ -686,7 +848,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     private RobotView view(RobotLane l) {
-        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent());
+        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent(),
+                l.online() ? null : l.offlineReason());
     }
 
     private TaskView publishTask(long id, boolean withEvents) {
@@ -703,7 +866,8 @@ public final class FleetService implements AutoCloseable {
     }
 
     private static TaskView withoutEvents(TaskView v) {
-        return new TaskView(v.id(), v.task(), v.args(), v.call(), v.state(), v.robot(), v.preferredRobot(), v.reason(), v.submittedAt(), v.updatedAt(), null);
+        return new TaskView(v.id(), v.task(), v.args(), v.call(), v.state(), v.robot(), v.preferredRobot(), v.reason(), v.submittedAt(), v.updatedAt(), null,
+                v.priority(), v.expectedStart(), v.expectedFinish());
     }
 
     private void publishRequests() {

@@ -63,7 +63,7 @@ public final class OpenApiDocument {
 
         ObjectNode paths = doc.putObject("paths");
         ObjectNode tasks = paths.putObject("/api/tasks");
-        ObjectNode list = op(tasks, "get", "listTasks", "The tasks, newest first; ?state=queued|running|completed|aborted|cancelled|done filters.");
+        ObjectNode list = op(tasks, "get", "listTasks", "The tasks, newest first; ?state=queued|running|completed|aborted|cancelled|done|refused filters.");
         list.putArray("parameters").addObject().put("name", "state").put("in", "query").put("required", false).putObject("schema").put("type", "string");
         response(list, "200", "The tasks", arrayOf("Task"));
         errors(list, "401");
@@ -163,6 +163,7 @@ public final class OpenApiDocument {
         s.put("additionalProperties", false);
         ObjectNode props = s.putObject("properties");
         props.putObject("task").put("type", "string").putArray("enum").add(task.name());
+        props.set("priority", priority());
         ObjectNode args = props.putObject("args");
         args.put("type", "object");
         args.put("additionalProperties", false);
@@ -200,6 +201,11 @@ public final class OpenApiDocument {
         return s;
     }
 
+    private static ObjectNode priority() {
+        return JSON.objectNode().put("type", "integer").put("minimum", TaskCatalog.MIN_PRIORITY).put("maximum", TaskCatalog.MAX_PRIORITY)
+                .put("default", 0).put("description", "higher is dispatched first; first come, first served within a priority");
+    }
+
     private static ObjectNode taskView() {
         ObjectNode s = JSON.objectNode().put("type", "object");
         ObjectNode p = s.putObject("properties");
@@ -207,13 +213,17 @@ public final class OpenApiDocument {
         p.putObject("task").put("type", "string");
         p.putObject("args").put("type", "object");
         p.putObject("call").put("type", "string");
-        p.putObject("state").put("type", "string").putArray("enum").add("queued").add("running").add("completed").add("aborted").add("cancelled").add("done");
+        p.putObject("state").put("type", "string").putArray("enum").add("queued").add("running").add("completed").add("aborted").add("cancelled").add("done").add("refused");
         p.putObject("robot").put("type", "string").put("nullable", true);
         p.putObject("preferredRobot").put("type", "string").put("nullable", true);
         p.putObject("reason").put("type", "string").put("nullable", true);
         p.putObject("submittedAt").put("type", "string").put("format", "date-time");
         p.putObject("updatedAt").put("type", "string").put("format", "date-time");
         p.putObject("events").put("type", "array").putObject("items").put("$ref", "#/components/schemas/Event");
+        p.set("priority", priority());
+        p.putObject("expectedStart").put("type", "string").put("format", "date-time").put("nullable", true)
+                .put("description", "queued or running: when it is expected to start, from the median time of recent tasks");
+        p.putObject("expectedFinish").put("type", "string").put("format", "date-time").put("nullable", true);
         return s;
     }
 
@@ -251,6 +261,8 @@ public final class OpenApiDocument {
         p.putObject("plan").put("type", "array").putObject("items").put("type", "string");
         p.putObject("step").put("type", "integer");
         p.putObject("map").put("type", "boolean");
+        p.putObject("offlineReason").put("type", "string").put("nullable", true)
+                .put("description", "why the robot is out of dispatch: taken offline by the operator, or several tasks in a row aborted on it");
         return s;
     }
 

@@ -36,6 +36,8 @@ final class RobotLane implements AutoCloseable {
     private final RefArc arc;
     private final Map<TaskInstance, Long> ids = Collections.synchronizedMap(new IdentityHashMap<>());
     private volatile boolean online = true;
+    private volatile String offlineReason;
+    private int abortedInARow;
     private volatile Long currentTask;
     private volatile String currentCall;
     private volatile String stopReason;
@@ -88,6 +90,33 @@ final class RobotLane implements AutoCloseable {
 
     void setOnline(boolean on) {
         online = on;
+        offlineReason = on ? null : "taken offline by the operator";
+        if (on) {
+            abortedInARow = 0;
+        }
+    }
+
+    /** Why the robot is out of dispatch, or null. */
+    String offlineReason() {
+        return offlineReason;
+    }
+
+    /**
+     * Counts a task aborted on this robot; returns how many in a row. A robot whose tasks keep
+     * aborting is taken out of dispatch (by the service) so that it stops taking work another robot could do.
+     */
+    synchronized int aborted() {
+        return ++abortedInARow;
+    }
+
+    synchronized void completed() {
+        abortedInARow = 0;
+    }
+
+    /** Takes the robot out of dispatch for {@code reason} (shown to the operator); the operator puts it back online. */
+    void takeOut(String reason) {
+        online = false;
+        offlineReason = reason;
     }
 
     boolean idle() {

@@ -23,6 +23,9 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * and the objects that exist, field by field.
  */
 public final class TaskCatalog {
+    public static final int MIN_PRIORITY = -100;
+    public static final int MAX_PRIORITY = 100;
+
     private final AppSchema schema;
     private final Map<String, DomainObject> objects;
 
@@ -36,7 +39,8 @@ public final class TaskCatalog {
     }
 
     /** A checked submission: the task, its arguments as submitted (JSON) and as runtime values, in parameter order. */
-    public record TaskCall(String task, ObjectNode args, List<Object> values) {
+    /** {@code priority}: higher is dispatched first; {@value #MIN_PRIORITY} to {@value #MAX_PRIORITY}, 0 unless given. */
+    public record TaskCall(String task, ObjectNode args, List<Object> values, int priority) {
         public String describe() {
             StringBuilder b = new StringBuilder(task).append('(');
             for (int i = 0; i < values.size(); i++) {
@@ -84,8 +88,18 @@ public final class TaskCatalog {
         List<FieldError> errors = new ArrayList<>();
         for (Iterator<String> it = body.fieldNames(); it.hasNext();) {
             String f = it.next();
-            if (!f.equals("task") && !f.equals("args")) {
-                errors.add(new FieldError(f, "unknown field; a submission has 'task' and 'args'"));
+            if (!f.equals("task") && !f.equals("args") && !f.equals("priority")) {
+                errors.add(new FieldError(f, "unknown field; a submission has 'task', 'args' and optionally 'priority'"));
+            }
+        }
+        int priority = 0;
+        JsonNode priorityNode = body.get("priority");
+        if (priorityNode != null && !priorityNode.isNull()) {
+            if (priorityNode.isIntegralNumber() && priorityNode.canConvertToInt() && priorityNode.intValue() >= MIN_PRIORITY
+                    && priorityNode.intValue() <= MAX_PRIORITY) {
+                priority = priorityNode.intValue();
+            } else {
+                errors.add(new FieldError("priority", "a whole number from " + MIN_PRIORITY + " to " + MAX_PRIORITY + " (higher runs first), not " + priorityNode));
             }
         }
         JsonNode taskNode = body.get("task");
@@ -130,7 +144,7 @@ public final class TaskCatalog {
         if (!errors.isEmpty()) {
             throw new InvalidSubmission(422, "invalid-arguments", errors);
         }
-        return new TaskCall(task.name(), canonical, values);
+        return new TaskCall(task.name(), canonical, values, priority);
     }
 
     private Object value(Param p, JsonNode v, String field, List<FieldError> errors) {

@@ -11,7 +11,8 @@ import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.Set;
 
-import org.triad.refarc.fleet.FleetContext;
+import org.triad.building.BuildingContext;
+import org.triad.building.SharedWorld;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.RobotPlatformProvider;
 import org.triad.runtime.app.DomainObject;
@@ -142,7 +143,22 @@ public final class TriadService implements AutoCloseable {
             boolean ownSim = providers.stream().anyMatch(p -> p.scheme().equals("sim") && p.application().equals(schema.name()));
             specs = List.of(ownSim ? "sim:1" : "dry:1");
         }
-        FleetContext context = new FleetContext() {
+        // one building for the whole fleet: its world starts as --situation says if given, else as the first dry spec's
+        // state=S or the first robot with a platform reports it, else as the application's first situation
+        State start;
+        try {
+            start = models.situation(o.situation());
+        } catch (IllegalArgumentException e) {
+            if (o.situation() != null) {
+                throw ServiceError.startup("--situation " + o.situation() + ": " + e.getMessage());
+            }
+            start = State.builder().build(); // no situation in the models: the robots' observations fill the world
+        }
+        SharedWorld world = new SharedWorld(schema, start);
+        if (o.situation() != null) {
+            world.startAs(start); // the user named the building's situation: robots join it
+        }
+        BuildingContext context = new BuildingContext() {
             @Override
             public AppSchema schema() {
                 return schema;
@@ -151,6 +167,11 @@ public final class TriadService implements AutoCloseable {
             @Override
             public State situation(String name) {
                 return models.situation(name != null ? name : o.situation());
+            }
+
+            @Override
+            public SharedWorld world() {
+                return world;
             }
         };
         List<FleetRobot> robots = new ArrayList<>();
@@ -178,7 +199,8 @@ public final class TriadService implements AutoCloseable {
                 } catch (Exception e) {
                     throw ServiceError.startup("--robots " + spec + ": cannot connect: " + e.getMessage());
                 }
-                for (FleetRobot r : connected) {
+                for (FleetRobot connectedRobot : connected) {
+                    FleetRobot r = world.observing(connectedRobot);
                     robots.add(r);
                     if (!r.name().matches("[A-Za-z0-9_-]+") || !names.add(r.name())) {
                         throw ServiceError.startup("--robots: robot name '" + r.name() + "' is " + (names.contains(r.name()) ? "used twice" : "not letters, digits, '-' and '_'"));

@@ -11,13 +11,14 @@ public final class Views {
     }
 
     public record TaskView(long id, String task, JsonNode args, String call, String state, String robot, String preferredRobot,
-            String reason, String submittedAt, String updatedAt, List<EventView> events) {
+            String reason, String submittedAt, String updatedAt, List<EventView> events, int priority, String expectedStart, String expectedFinish) {
     }
 
     public record EventView(long id, String at, String kind, String robot, String text) {
     }
 
-    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map) {
+    /** {@code offlineReason}: why the robot is out of dispatch (the operator, or tasks aborted on it in a row), or null. */
+    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason) {
     }
 
     public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,

@@ -29,7 +29,8 @@ class OperatorActionsTest {
 
     @BeforeAll
     static void start() {
-        s = ServiceFixture.start(dir.resolve("db"), "dry:1,state=Morning,fail=pick*4", "dry:1,state=Evening", "dry:1,state=Morning,gone=1", "dry:1,state=Shortage");
+        s = ServiceFixture.start(dir.resolve("db"), "dry:1,state=Morning,fail=pick*4", "dry:1,state=Evening", "dry:1,state=Morning,gone=1",
+                "dry:1,state=Morning,fail=pick*1000");
         s.post("/api/robots/dry-3/offline", "", ServiceFixture.OPERATOR);
         s.post("/api/robots/dry-4/offline", "", ServiceFixture.OPERATOR);
     }

@@ -3,6 +3,8 @@ package org.triad.service.fleet;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.triad.building.BuildingContext;
+import org.triad.building.SharedWorld;
 import org.triad.refarc.fleet.FleetContext;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.RobotPlatformProvider;
@@ -10,10 +12,11 @@ import org.triad.runtime.app.State;
 
 /**
  * Scheme {@code dry}, for every application: robots whose actions do exactly what their
- * postconditions say, over a situation of the models, like {@code ./triad run}. Argument
- * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]}: N robots on situation S (default: the
- * service's), each action taking MS milliseconds, the first K calls of ACTION failing on every robot,
- * or every robot vanishing (its state can no longer be read) after K actions.
+ * postconditions say, in the fleet's one building (a {@link SharedWorld}: what one robot picks up is
+ * gone for the others), like {@code ./triad run}. Argument
+ * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]}: N robots starting where situation S puts the
+ * robot (default: the service's situation), each action taking MS milliseconds, the first K calls of
+ * ACTION failing on every robot, or every robot vanishing (its state can no longer be read) after K actions.
  */
 public final class DryRunFleet implements RobotPlatformProvider {
     public static final int MAX_ROBOTS = 1000;
@@ -67,9 +70,15 @@ public final class DryRunFleet implements RobotPlatformProvider {
             }
         }
         State initial = context.situation(situation);
+        // one building for the whole fleet: the service's, or one for these robots when used without a service
+        SharedWorld world = context instanceof BuildingContext b ? b.world() : new SharedWorld(context.schema(), initial);
+        if (situation != null) {
+            world.startAs(initial); // the first word on the building's world wins; later specs' robots start where S puts them
+        }
         List<FleetRobot> robots = new ArrayList<>();
         for (int i = 1; i <= n; i++) {
-            robots.add(new DryRunRobot("dry-" + ++numbered, context.schema(), initial, delayMillis, failAction, failCalls, goneAfter));
+            String name = "dry-" + ++numbered;
+            robots.add(new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, goneAfter));
         }
         return robots;
     }

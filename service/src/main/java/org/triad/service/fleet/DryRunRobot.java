@@ -3,28 +3,33 @@ package org.triad.service.fleet;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicInteger;
 
+import org.triad.building.BuildingMember;
+import org.triad.building.ModelRobot;
+import org.triad.building.SharedWorld;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
 import org.triad.refarc.fleet.FleetRobot;
-import org.triad.refarc.model.DryRunWorld;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
-import org.triad.runtime.schema.AppSchema;
 
-/** A robot of {@link DryRunFleet}: a {@link DryRunWorld} of its own, with optional delay, failures and disappearance. */
-final class DryRunRobot implements FleetRobot, StateSource, ActionRunner {
+/**
+ * A robot of {@link DryRunFleet}: a {@link ModelRobot} in the fleet's one building (its actions do what
+ * their postconditions say, on the shared world), with optional delay, failures and disappearance.
+ */
+final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, BuildingMember {
     private final String name;
-    private final DryRunWorld world;
+    private final ModelRobot world;
     private final long delayMillis;
     private final String failAction;
     private final int failCalls;
     private final int goneAfter;
     private final AtomicInteger failed = new AtomicInteger();
     private final AtomicInteger executed = new AtomicInteger();
+    private volatile String lastFailure;
 
-    DryRunRobot(String name, AppSchema schema, State initial, long delayMillis, String failAction, int failCalls, int goneAfter) {
+    DryRunRobot(String name, ModelRobot body, long delayMillis, String failAction, int failCalls, int goneAfter) {
         this.name = name;
-        this.world = new DryRunWorld(schema, initial);
+        this.world = body;
         this.delayMillis = delayMillis;
         this.failAction = failAction;
         this.failCalls = failCalls;
@@ -34,6 +39,11 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner {
     @Override
     public String name() {
         return name;
+    }
+
+    @Override
+    public SharedWorld world() {
+        return world.world();
     }
 
     @Override
@@ -61,7 +71,9 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner {
 
     @Override
     public boolean execute(GroundAction action) throws InterruptedException {
+        lastFailure = null;
         if (gone()) {
+            lastFailure = "robot " + name + " does not answer (connection lost)";
             return false;
         }
         if (delayMillis > 0) {
@@ -69,10 +81,15 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner {
         }
         if (action.action().equals(failAction) && failed.get() < failCalls) {
             failed.incrementAndGet();
+            lastFailure = "injected failure " + failed.get() + " of " + failCalls + " (fail=" + failAction + "*" + failCalls + ")";
+            return false;
+        }
+        if (!world.execute(action)) {
+            lastFailure = world.failureReason(action).orElse(null);
             return false;
         }
         executed.incrementAndGet();
-        return world.execute(action);
+        return true;
     }
 
     @Override
@@ -80,8 +97,7 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner {
         if (gone()) {
             return Optional.of("robot " + name + " does not answer (connection lost)");
         }
-        return action.action().equals(failAction) ? Optional.of("injected failure " + failed.get() + " of " + failCalls + " (fail=" + failAction + "*" + failCalls + ")")
-                : Optional.empty();
+        return Optional.ofNullable(lastFailure);
     }
 
     private boolean gone() {

@@ -7,8 +7,9 @@ public final class Records {
     private Records() {
     }
 
+    /** {@code priority}: higher is dispatched first (0 unless the submission said otherwise). */
     public record TaskRow(long id, String task, String args, TaskState state, String robot, String preferredRobot, String reason,
-            Instant submittedAt, Instant updatedAt) {
+            Instant submittedAt, Instant updatedAt, int priority) {
     }
 
     public record EventRow(long id, long taskId, Instant at, String kind, String robot, String text) {

@@ -13,14 +13,19 @@ public enum TaskState {
     ABORTED,
     CANCELLED,
     /** The operator marked it done by hand. */
-    DONE;
+    DONE,
+    /**
+     * Not executed: it waited for an object another task held, and when that task ended the task's
+     * outcome (its last goal) already held for the robot that would have run it; the reason names the task.
+     */
+    REFUSED;
 
     public String json() {
         return name().toLowerCase(Locale.ROOT);
     }
 
     public boolean isFinal() {
-        return this == COMPLETED || this == CANCELLED || this == DONE;
+        return this == COMPLETED || this == CANCELLED || this == DONE || this == REFUSED;
     }
 
     public static TaskState fromJson(String s) {
@@ -29,6 +34,6 @@ public enum TaskState {
                 return t;
             }
         }
-        throw new IllegalArgumentException("no task state '" + s + "'; states are queued, running, completed, aborted, cancelled, done");
+        throw new IllegalArgumentException("no task state '" + s + "'; states are queued, running, completed, aborted, cancelled, done, refused");
     }
 }

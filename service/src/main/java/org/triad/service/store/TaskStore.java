@@ -131,16 +131,21 @@ public final class TaskStore implements AutoCloseable {
     // ---- tasks --------------------------------------------------------------------------------
 
     public TaskRow insertTask(String task, String argsJson, Instant now) {
+        return insertTask(task, argsJson, 0, now);
+    }
+
+    public TaskRow insertTask(String task, String argsJson, int priority, Instant now) {
         return work(c -> {
             try (PreparedStatement s = c.prepareStatement(
-                    "INSERT INTO task(name, args, state, submitted_at, updated_at) VALUES (?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
+                    "INSERT INTO task(name, args, state, submitted_at, updated_at, priority) VALUES (?, ?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
                 s.setString(1, task);
                 s.setString(2, argsJson);
                 s.setString(3, TaskState.QUEUED.name());
                 s.setTimestamp(4, Timestamp.from(now));
                 s.setTimestamp(5, Timestamp.from(now));
+                s.setInt(6, priority);
                 s.executeUpdate();
-                return new TaskRow(generatedKey(s), task, argsJson, TaskState.QUEUED, null, null, null, now, now);
+                return new TaskRow(generatedKey(s), task, argsJson, TaskState.QUEUED, null, null, null, now, now, priority);
             }
         });
     }
@@ -154,16 +159,16 @@ public final class TaskStore implements AutoCloseable {
         return submitTask(task, argsJson, now, submittedText).task();
     }
 
-    /** As {@link #insertTask(String, String, Instant, String)}, with the event. */
+    /** As {@link #insertTask(String, String, Instant, String)}, with the event (priority 0). */
     public Submitted submitTask(String task, String argsJson, Instant now, String submittedText) {
-        return submitTask(task, argsJson, now, submittedText, null);
+        return submitTask(task, argsJson, 0, now, submittedText, null);
     }
 
     /**
      * Stores a submission under the client's idempotency {@code key} (null: none); a key stored before
      * returns that task instead ({@code created} false), whatever its state.
      */
-    public Submitted submitTask(String task, String argsJson, Instant now, String submittedText, String key) {
+    public Submitted submitTask(String task, String argsJson, int priority, Instant now, String submittedText, String key) {
         if (key != null) {
             List<TaskRow> before = tasks("SELECT * FROM task WHERE submission_key = ?", key);
             if (!before.isEmpty()) {
@@ -173,13 +178,14 @@ public final class TaskStore implements AutoCloseable {
         return transaction(c -> {
             long id;
             try (PreparedStatement s = c.prepareStatement(
-                    "INSERT INTO task(name, args, state, submitted_at, updated_at, submission_key) VALUES (?, ?, ?, ?, ?, ?)", Statement.RETURN_GENERATED_KEYS)) {
-                bind(s, task, argsJson, TaskState.QUEUED.name(), Timestamp.from(now), Timestamp.from(now), key);
+                    "INSERT INTO task(name, args, state, submitted_at, updated_at, submission_key, priority) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                    Statement.RETURN_GENERATED_KEYS)) {
+                bind(s, task, argsJson, TaskState.QUEUED.name(), Timestamp.from(now), Timestamp.from(now), key, priority);
                 s.executeUpdate();
                 id = generatedKey(s);
             }
             EventRow event = insertEvent(c, id, "submitted", null, submittedText, now);
-            return new Submitted(new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now), event, true);
+            return new Submitted(new TaskRow(id, task, argsJson, TaskState.QUEUED, null, null, null, now, now, priority), event, true);
         });
     }
 
@@ -265,7 +271,7 @@ public final class TaskStore implements AutoCloseable {
                     while (r.next()) {
                         out.add(new TaskRow(r.getLong("id"), r.getString("name"), r.getString("args"), TaskState.valueOf(r.getString("state")),
                                 r.getString("robot"), r.getString("preferred_robot"), r.getString("reason"), instant(r, "submitted_at"),
-                                instant(r, "updated_at")));
+                                instant(r, "updated_at"), r.getInt("priority")));
                     }
                 }
                 return out;

@@ -93,6 +93,7 @@
         r.task ? [" with ", el("span", { class: "robot-task" }, "#" + r.task + " " + r.call)] : "",
         " ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
           r.online ? "Take offline" : "Put online")),
+      r.offlineReason ? el("div", { class: "robot-offline-reason" }, r.offlineReason) : "",
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
   }
 

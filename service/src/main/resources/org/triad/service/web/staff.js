@@ -63,8 +63,10 @@
       args[name] = p.type === "boolean" ? input.checked : (p.type === "integer" || p.type === "number") && !p.enum ? Number(input.value) : input.value;
     }
     argsBox.querySelectorAll(".field-error").forEach(e => e.textContent = "");
+    document.getElementById("error-priority").textContent = "";
+    const priority = Number(document.getElementById("task-priority").value || 0);
     try {
-      const t = await api("POST", "/api/tasks", { task, args });
+      const t = await api("POST", "/api/tasks", { task, args, priority });
       message.textContent = "Task #" + t.id + " queued.";
       message.className = "";
       show(t);
@@ -93,9 +95,11 @@
     const cancellable = ["queued", "running", "aborted"].includes(t.state);
     row.replaceChildren(
       el("td", {}, "#" + t.id),
+      el("td", { class: "priority" }, String(t.priority || 0)),
       el("td", {}, el("a", { href: "#", onclick: e => { e.preventDefault(); selected = t.id; detail(t.id); } }, t.call)),
       el("td", { class: "state state-" + t.state }, t.state),
       el("td", {}, t.robot || ""),
+      el("td", { class: "expected muted" }, t.expectedStart ? "start " + time(t.expectedStart) + ", finish " + time(t.expectedFinish) : ""),
       el("td", { class: "latest muted" }, latest),
       el("td", {}, cancellable ? el("button", { class: "cancel", onclick: () => api("DELETE", "/api/tasks/" + t.id).then(show).catch(e => alert(e.message)) }, "Cancel") : ""));
   }

@@ -8,6 +8,8 @@ import java.util.function.Consumer;
 
 import org.triad.vda5050.mqtt.MqttLink;
 import org.triad.vda5050.mqtt.Received;
+import org.triad.vda5050.protocol.Connection;
+import org.triad.vda5050.protocol.Messages.ConnectionState;
 import org.triad.vda5050.protocol.Topic;
 
 /**
@@ -32,6 +34,8 @@ public final class MasterControl implements AutoCloseable {
     private final Consumer<String> log;
     private final Map<String, RemoteAgv> agvs = new ConcurrentHashMap<>();
     private final Set<String> unknownReported = ConcurrentHashMap.newKeySet();
+    /** Every AGV heard on the connection topic (known or not), with the last connection state it reported: discovery. */
+    private final Map<String, ConnectionState> announced = new ConcurrentHashMap<>();
 
     private MasterControl(MqttLink link, VdaTimeouts timeouts, Consumer<String> log) {
         this.link = link;
@@ -78,7 +82,19 @@ public final class MasterControl implements AutoCloseable {
         return link;
     }
 
+    /**
+     * The AGVs that announced themselves on this broker's {@code connection} topic (the retained message
+     * of every AGV that ever connected, then each change), as {@code manufacturer/serialNumber} with the
+     * last state each reported: discovery for services that drive whatever AGVs are there.
+     */
+    public Map<String, ConnectionState> announced() {
+        return Map.copyOf(announced);
+    }
+
     private void route(Received r) {
+        if (r.address().topic() == Topic.CONNECTION) {
+            announced.put(r.address().manufacturer() + "/" + r.address().serialNumber(), r.as(Connection.class).connectionState());
+        }
         RemoteAgv agv = agvs.get(r.address().manufacturer() + "/" + r.address().serialNumber());
         if (agv == null) {
             if (unknownReported.add(r.address().manufacturer() + "/" + r.address().serialNumber())) {

@@ -132,10 +132,32 @@ public final class RemoteAgv implements FailureExplaining {
     public boolean awaitOnline() {
         boolean knownDown;
         synchronized (lock) {
-            knownDown = connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE;
+            knownDown = down();
         }
-        return await(() -> state != null && connection != ConnectionState.CONNECTIONBROKEN && connection != ConnectionState.OFFLINE,
-                knownDown ? timeouts.reconnectGraceSeconds() : timeouts.onlineSeconds());
+        return await(() -> state != null && !down(), knownDown ? timeouts.reconnectGraceSeconds() : timeouts.onlineSeconds());
+    }
+
+    /**
+     * Whether the AGV is down as far as this master can tell: its last connection message says
+     * CONNECTIONBROKEN or OFFLINE and no state has come from it since. A connection message alone does
+     * not decide it, because a CONNECTIONBROKEN reaches master control while the AGV is fine: a broker
+     * that is stopped publishes the last will of every client still connected (Mosquitto does, on
+     * SIGTERM) and keeps it as the retained message, so after the restart master control gets it again
+     * (as a QoS 1 redelivery and as the retained message of its renewed subscription) in an order
+     * relative to the AGV's re-announced ONLINE that depends on who reconnects first. A will's headerId
+     * and timestamp are set at connect time and are outdated by definition (VDA 5050 6.14), so they
+     * cannot order it either. A state can only come from an AGV that is connected, so a state received
+     * after the connection message wins. Call with the lock held.
+     */
+    private boolean down() {
+        return (connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= stateNanos;
+    }
+
+    /** Whether the AGV reports state and its connection is not known broken (see {@link #awaitOnline()}). */
+    public boolean isOnline() {
+        synchronized (lock) {
+            return state != null && !down();
+        }
     }
 
     /** Drives from node {@code from} (where the AGV is) along the edge to node {@code to}: an order of two nodes and an edge. */
@@ -296,20 +318,30 @@ public final class RemoteAgv implements FailureExplaining {
                 return;
             }
         }
-        // silent: no state since its last state or its (re)connection; a frozen AGV is not waited for
-        await(() -> state == null || !abandonedOrder.equals(state.orderId())
-                || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving()
-                || System.nanoTime() - Math.max(stateNanos, connectionNanos) > seconds(timeouts.stateSeconds()), timeouts.actionSeconds());
+        // silent: no state for stateSeconds since the wait began (or since its last state or (re)connection, if later);
+        // a frozen AGV is not waited for, but one that was only slow (a loaded machine) gets that long to speak again
+        long began = System.nanoTime();
+        await(() -> abandonedOrderEnded()
+                || System.nanoTime() - Math.max(began, Math.max(stateNanos, connectionNanos)) > seconds(timeouts.stateSeconds()), timeouts.actionSeconds());
         synchronized (lock) {
-            abandonedOrder = null;
+            // kept until the AGV shows it ended: the next order after a refusal ("still executing") waits again
+            if (abandonedOrderEnded()) {
+                abandonedOrder = null;
+            }
         }
+    }
+
+    /** Whether the AGV's state shows the abandoned order ended (or another order running); call with the lock held. */
+    private boolean abandonedOrderEnded() {
+        return state == null || !abandonedOrder.equals(state.orderId())
+                || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
     }
 
     /** Whether the AGV is (or comes) online; otherwise records why not. */
     private boolean ready(String call) {
         if (!awaitOnline()) {
             synchronized (lock) {
-                if (connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) {
+                if (down()) {
                     lastFailure = "AGV " + name() + " is " + connection + ", cannot " + call;
                 } else {
                     lastFailure = String.format(Locale.ROOT, "AGV %s did not come online on %s within %.1f s, cannot %s", name(), link.broker(),
@@ -362,7 +394,7 @@ public final class RemoteAgv implements FailureExplaining {
                     }
                 }
                 // the grace runs while this master is connected itself: after a broker restart the AGV's ONLINE comes after ours
-                if ((connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= sentNanos
+                if (down() && connectionNanos >= sentNanos
                         && link.isConnected() && now - Math.max(connectionNanos, masterReconnectNanos) > seconds(timeouts.reconnectGraceSeconds())) {
                     if (orderId != null) {
                         abandonedOrder = orderId;

@@ -27,6 +27,7 @@ import picocli.CommandLine.Option;
 				"Exit code: 0 when the task completed, 1 when it was aborted." })
 public final class HospitalDemo implements Callable<Integer> {
 	public static void main(String[] args) {
+		org.triad.runtime.app.LauncherWatch.exitWithLauncher(System.err::println); // started by ./triad demo: end with it
 		System.exit(run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true)));
 	}
 

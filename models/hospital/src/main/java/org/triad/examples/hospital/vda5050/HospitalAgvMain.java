@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
 
 /**
@@ -72,6 +73,8 @@ public final class HospitalAgvMain {
             System.exit(2);
             return;
         }
+        // started by ./triad robot: end (reporting OFFLINE) when ./triad is gone, even if it was killed with SIGKILL
+        LauncherWatch.exitWithLauncher(System.err::println);
         System.exit(serve(o, System.out, System.err));
     }
 

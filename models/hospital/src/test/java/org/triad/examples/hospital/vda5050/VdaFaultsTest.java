@@ -47,9 +47,15 @@ class VdaFaultsTest {
     static final VdaTimeouts TEST_TIMEOUTS = new VdaTimeouts(10, 2, 60, 1);
     /**
      * A broker restart takes the robot's MQTT client a reconnect with back-off (1 s, then 2 s), which
-     * a 1 s grace missed on a loaded machine; the defaults give 3 s, and 5 s keep the test from racing it.
+     * a 1 s grace missed on a loaded machine; the defaults give 3 s, and 5 s keep the test from racing it;
+     * 10 s of silence, because a loaded machine starves the robot's process for seconds.
      */
-    static final VdaTimeouts RESTART_TIMEOUTS = new VdaTimeouts(10, 2, 60, 5);
+    static final VdaTimeouts RESTART_TIMEOUTS = new VdaTimeouts(30, 10, 120, 5);
+    /**
+     * For the tests that are not about silence: a robot process starved for more than 2 s on a loaded
+     * machine (8 builds on 2 cores) must not fail them with "no state".
+     */
+    static final VdaTimeouts LOADED_TIMEOUTS = new VdaTimeouts(30, 10, 120, 5);
 
     private MosquittoBroker broker;
     private ConformanceMonitor monitor;
@@ -112,9 +118,6 @@ class VdaFaultsTest {
     }
 
     @Test
-    @org.junit.jupiter.api.Disabled("flaky, a defect found 2026-11-23: in 2 of 3 runs on an idle machine, after the broker restart the robot "
-            + "reconnected within 1 s (mosquitto.log) and finished its order, yet master control saw it CONNECTIONBROKEN until the "
-            + "task aborted: its re-announced ONLINE is lost or overtaken by its last will; see the closing note of session 3")
     void brokerRestartedMidTaskTheTaskCompletesAndNoOrderRunsTwice() throws Exception {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 8, dir);
                 MasterControl master = MasterControl.connect(broker.url(), RESTART_TIMEOUTS, masterLog::add)) {
@@ -146,16 +149,16 @@ class VdaFaultsTest {
     @Test
     void robotRejectingAnOrderFailsTheActionWithItsErrorAndEndsInRemoteOperation() throws Exception {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
-                MasterControl master = MasterControl.connect(broker.url(), TEST_TIMEOUTS, masterLog::add)) {
-            // the master believes the robot is in storage (a stale situation); the robot stands in the lobby
+                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add)) {
+            // the models believe in a corridor from the lobby straight into ward 3 that the building does not have
             HospitalSimulation morning = new HospitalSimulation(1);
             State believed = new HospitalStateProvider(morning.courier(), morning.building()).currentState().toBuilder()
-                    .value(Atom.of("Courier", "loc"), morning.objects().room("storage")).build();
+                    .fact(Atom.of("Building", "adj", morning.objects().room("lobby"), morning.objects().room("ward3"))).build();
             ModelAgvActors actors = new ModelAgvActors(HospitalSchema.SCHEMA, believed, master.agv("courier-1"));
             RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), actors)
                     .run(new GoTo(morning.objects().room("ward3")), statuses::add);
             assertTrue(failures().lines().findFirst().orElse("")
-                    .contains("rejected by AGV triad/courier-1: noRouteError: the order starts at storage but the AGV is at lobby"), failures());
+                    .contains("rejected by AGV triad/courier-1: noRouteError: no corridor from lobby to ward3"), failures());
             assertAbortedWithRemoteOperation(run, r -> r.contains("noRouteError"));
             assertEquals(4, robot.lines("rejected order").size(), robot.output());
             assertEquals(List.of(), robot.lines("accepted order"));
@@ -164,9 +167,29 @@ class VdaFaultsTest {
     }
 
     @Test
+    void aSecondRunOnTheSameRobotStartsWhereTheRobotReportsItIsNotWhereTheSituationSays() throws Exception {
+        try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
+                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add)) {
+            HospitalSimulation morning = new HospitalSimulation(1);
+            State situation = new HospitalStateProvider(morning.courier(), morning.building()).currentState(); // robot in the lobby
+            for (String room : List.of("ward1", "ward3")) {
+                // each run starts from the situation file, as './triad run --robots vda5050:' does
+                ModelAgvActors actors = new ModelAgvActors(HospitalSchema.SCHEMA, situation, master.agv("courier-1"));
+                RefArcRun run = new RefArcRunner(actors, new SchemaGoalPlanner(new GoalSolver(HospitalSchema.SCHEMA)), actors)
+                        .run(new GoTo(morning.objects().room(room)), statuses::add);
+                assertEquals(RefArcRun.Outcome.COMPLETED, run.outcome(), run.log() + "\n" + robot.output());
+            }
+            assertEquals("", failures(), "no action failed");
+            assertEquals(List.of(), robot.lines("rejected order"), "the second run planned from ward1, where the robot reported itself");
+            assertTrue(robot.lines("accepted order").get(robot.lines("accepted order").size() - 1).contains("ward3"), robot.output());
+        }
+        assertEquals(List.of(), monitor.violations());
+    }
+
+    @Test
     void malformedMessagesAreLoggedWithTheirTopicAndIgnoredAndTheTaskCompletes() {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
-                MasterControl master = MasterControl.connect(broker.url(), TEST_TIMEOUTS, masterLog::add);
+                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add);
                 MqttLink vandal = MqttLink.connect(broker.url(), "vandal", null, line -> { }, 10, 5)) {
             String state = Topic.STATE.of("triad", "courier-1");
             String order = Topic.ORDER.of("triad", "courier-1");

@@ -1,0 +1,12 @@
+package org.triad.building;
+
+import org.triad.refarc.fleet.FleetContext;
+
+/**
+ * What a fleet service gives robot platform providers when the robots share one building: the
+ * models' situations and the building's {@link SharedWorld}. Providers whose robots have no platform
+ * of their own (e.g. {@code dry}) put them into this world; robots with a platform are observed by it.
+ */
+public interface BuildingContext extends FleetContext {
+    SharedWorld world();
+}

@@ -1,0 +1,79 @@
+package org.triad.building;
+
+import java.util.Optional;
+
+import org.triad.refarc.ActionRunner;
+import org.triad.refarc.StateSource;
+import org.triad.refarc.fleet.FleetRobot;
+import org.triad.refarc.fleet.FloorMap;
+import org.triad.runtime.app.GroundAction;
+import org.triad.runtime.app.State;
+
+/**
+ * A robot with a platform of its own (simulator, AGV) as a member of a {@link SharedWorld}: it plans
+ * on the building's world with its own robot-actor values as the platform reports them, and what its
+ * platform reports changed in the world while it acted is written into the building.
+ */
+final class ObservedRobot implements FleetRobot, BuildingMember {
+    private final SharedWorld world;
+    private final FleetRobot robot;
+    private final StateSource view;
+    private final ActionRunner runner;
+
+    ObservedRobot(SharedWorld world, FleetRobot robot) {
+        this.world = world;
+        this.robot = robot;
+        this.view = world.view(robot.stateSource());
+        ActionRunner own = robot.actionRunner();
+        StateSource ownState = robot.stateSource();
+        this.runner = new ActionRunner() {
+            @Override
+            public Optional<String> violatedPrecondition(GroundAction action, State now) throws Exception {
+                return own.violatedPrecondition(action, now);
+            }
+
+            @Override
+            public boolean execute(GroundAction action) throws Exception {
+                State before = ownState.currentState();
+                boolean ok = own.execute(action);
+                world.observe(before, ownState.currentState());
+                return ok;
+            }
+
+            @Override
+            public Optional<String> failureReason(GroundAction action) {
+                return own.failureReason(action);
+            }
+        };
+    }
+
+    @Override
+    public SharedWorld world() {
+        return world;
+    }
+
+    @Override
+    public String name() {
+        return robot.name();
+    }
+
+    @Override
+    public StateSource stateSource() {
+        return view;
+    }
+
+    @Override
+    public ActionRunner actionRunner() {
+        return runner;
+    }
+
+    @Override
+    public Optional<FloorMap> floor() {
+        return robot.floor();
+    }
+
+    @Override
+    public void close() {
+        robot.close();
+    }
+}
