@@ -248,6 +248,14 @@ public final class PddlTranslator {
 		}
 
 		Formula equality(Expr l, Expr r) {
+			if (isCondition(l) || isCondition(r)) {
+				// 'p() == false', 'p() == q()': the same truth value
+				requirements.add(":negative-preconditions");
+				requirements.add(":disjunctive-preconditions");
+				Formula a = truth(l);
+				Formula b = truth(r);
+				return new Formula.Or(List.of(new Formula.And(List.of(a, b)), new Formula.And(List.of(new Formula.Not(a), new Formula.Not(b)))));
+			}
 			if (isFunction(l) && !isFunction(r)) {
 				return atom((Expr.Call) l, term(r));
 			}
@@ -267,6 +275,19 @@ public final class PddlTranslator {
 				args.add(value);
 			}
 			return new Formula.Atom(PddlNames.predicate(c.actor(), c.property()), args);
+		}
+
+		private boolean isCondition(Expr e) {
+			return e instanceof Expr.Call c && property(c).isBoolean();
+		}
+
+		/** A Boolean operand of '==' as a formula: a condition as it is, a Boolean value as equal to true. */
+		private Formula truth(Expr e) {
+			if (isCondition(e) || e instanceof Expr.Lit l && l.value() instanceof Boolean) {
+				return formula(e);
+			}
+			requirements.add(":equality");
+			return new Formula.Equals(term(e), term(new Expr.Lit(Boolean.TRUE)));
 		}
 
 		boolean isFunction(Expr e) {

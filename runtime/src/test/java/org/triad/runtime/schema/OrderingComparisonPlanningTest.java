@@ -42,6 +42,8 @@ class OrderingComparisonPlanningTest {
 			.goal(new GoalSchema("Charged", List.of(new Param("n", "int")), new Expr.Compare(Expr.Op.GT, CHARGE, Expr.var("n"))))
 			.goal(new GoalSchema("Docked", List.of(), Expr.call("World", "dock", LOC)))
 			.goal(new GoalSchema("Home", List.of(), Expr.eq(LOC, Expr.call("World", "home"))))
+			.goal(new GoalSchema("Undocked", List.of(), Expr.eq(Expr.call("World", "dock", LOC), new Expr.Lit(false))))
+			.goal(new GoalSchema("DockIs", List.of(new Param("d", "boolean")), Expr.eq(Expr.call("World", "dock", LOC), Expr.var("d"))))
 			.build();
 
 	private final GenericObject a = new GenericObject("a", "Place", Map.of());
@@ -82,6 +84,15 @@ class OrderingComparisonPlanningTest {
 				.value(Atom.of("Bot", "charge"), 3).build()));
 		assertEquals(List.of(new GroundAction("Bot", "move", List.of(b, c))), planned("Home", List.of(), atB.toBuilder()
 				.value(Atom.of("Bot", "charge"), 2).build()));
+	}
+
+	@Test
+	void aConditionComparedWithATruthValueIsPlanned() {
+		State charged = start().toBuilder().value(Atom.of("Bot", "charge"), 3).build();
+		List<GroundAction> away = List.of(new GroundAction("Bot", "move", List.of(a, b)));
+		assertEquals(away, planned("Undocked", List.of(), charged));
+		assertEquals(away, planned("DockIs", List.of(false), charged));
+		assertEquals(List.of(), planned("DockIs", List.of(true), charged));
 	}
 
 	@Test
