@@ -244,6 +244,9 @@ public final class PddlTranslator {
 			if (e instanceof Expr.Lit l && l.value() instanceof Boolean b) {
 				return b ? new Formula.And(List.of()) : new Formula.Or(List.of());
 			}
+			if (e instanceof Expr.Var) {
+				return truth(e); // a boolean parameter as a condition
+			}
 			throw new PddlTranslationException(Exprs.show(e) + " is not a condition");
 		}
 
