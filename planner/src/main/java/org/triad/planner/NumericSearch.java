@@ -53,6 +53,8 @@ final class NumericSearch {
             task = new NumericTask(domain, problem);
         } catch (PlanningInputException e) {
             return SolveResult.error(e.getMessage());
+        } catch (RuntimeException e) {
+            return SolveResult.error("internal error while grounding: " + e);
         }
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
@@ -81,7 +83,7 @@ final class NumericSearch {
             int id = open.poll();
             Node n = nodes.get(id);
             if (holds(task.goal, n.state)) return SolveResult.solved(plan(task, nodes, id), stats(groundMs, searchStart, expanded, nodes.size()));
-            if (++expanded > EXPANSION_BUDGET || (expanded & 255) == 0 && System.nanoTime() > deadline) {
+            if (++expanded > EXPANSION_BUDGET || System.nanoTime() > deadline) {
                 return SolveResult.timeout(stats(groundMs, searchStart, expanded, nodes.size()));
             }
             for (int o = 0; o < task.ops.size(); o++) {

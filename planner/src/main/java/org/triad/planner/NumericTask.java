@@ -80,6 +80,9 @@ final class NumericTask {
     private final Set<String> assignedFunctions = new HashSet<>();
     private final ObjectUniverse universe;
     private final Map<String, Double> constantCosts = new HashMap<>();
+    /** Partial parameter bindings tried while grounding, at most {@link #MAX_BINDINGS} (a work bound, not a time bound). */
+    private long bindings;
+    static final long MAX_BINDINGS = 5_000_000;
 
     NumericTask(Domain domain, Problem problem) {
         if (!domain.axioms().isEmpty()) throw new PlanningInputException("derived predicates together with numeric fluents are not supported");
@@ -144,6 +147,10 @@ final class NumericTask {
     }
 
     private void bind(Action a, int i, Map<String, String> b, List<Formula> conjuncts) {
+        if (++bindings > MAX_BINDINGS) {
+            throw new PlanningInputException("grounding action '" + a.name() + "' passes " + MAX_BINDINGS
+                    + " partial bindings; the task is too large for numeric planning");
+        }
         for (Formula c : conjuncts) {
             if (isStaticTest(c) && bound(c, b) && cond(c, b, false, null) == FALSE) return;
         }

@@ -496,7 +496,9 @@ public final class PddlParser {
     private NumericTerm numeric(SExpr e) {
         if (!e.isList()) {
             try {
-                return new NumericTerm.Constant(Double.parseDouble(e.symbol));
+                double v = Double.parseDouble(e.symbol);
+                if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
+                return new NumericTerm.Constant(v);
             } catch (NumberFormatException ex) {
                 throw err(e, "expected a number or a function term, found '" + e.symbol + "'");
             }
