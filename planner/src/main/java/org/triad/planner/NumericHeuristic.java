@@ -32,6 +32,7 @@ final class NumericHeuristic {
         boolean[] done = new boolean[goals.size()];
         int open = goals.size();
         int sum = 0;
+        boolean checkedOptimistically = false;
         for (int layer = 0; layer <= MAX_LAYERS; layer++) {
             for (int g = 0; g < goals.size(); g++) {
                 if (!done[g] && holds(goals.get(g), reached, lo, hi)) {
@@ -52,14 +53,56 @@ final class NumericHeuristic {
                     for (NumericTask.NumEffect n : e.numeric()) widen(n, lo, hi, nextLo, nextHi);
                 }
             }
-            boolean changed = !nextFacts.equals(reached);
+            boolean factsChanged = !nextFacts.equals(reached);
+            boolean changed = factsChanged;
             for (int i = 0; i < lo.length && !changed; i++) changed = nextLo[i] != lo[i] || nextHi[i] != hi[i];
             if (!changed) return DEAD_END;
+            if (!factsChanged && !checkedOptimistically) {
+                // only numbers still grow, perhaps forever: a goal that needs a fact no action can add is out of reach
+                checkedOptimistically = true;
+                if (!optimisticallyReachable(reached, done)) return DEAD_END;
+            }
             reached = nextFacts;
             lo = nextLo;
             hi = nextHi;
         }
         return sum + open * MAX_LAYERS;
+    }
+
+    /** Whether every open goal can hold when facts are never deleted and every comparison counts as true. */
+    private boolean optimisticallyReachable(BitSet from, boolean[] done) {
+        BitSet facts = (BitSet) from.clone();
+        boolean grew = true;
+        while (grew) {
+            grew = false;
+            for (NumericTask.Op op : task.ops) {
+                if (!optimistic(op.pre(), facts)) continue;
+                for (NumericTask.Effects e : op.effects()) {
+                    if (!optimistic(e.when(), facts)) continue;
+                    for (int f : e.adds()) {
+                        if (!facts.get(f)) {
+                            facts.set(f);
+                            grew = true;
+                        }
+                    }
+                }
+            }
+        }
+        for (int g = 0; g < goals.size(); g++) if (!done[g] && !optimistic(goals.get(g), facts)) return false;
+        return true;
+    }
+
+    private static boolean optimistic(NumericTask.Cond c, BitSet facts) {
+        if (c instanceof NumericTask.Fact f) return !f.positive() || facts.get(f.id());
+        if (c instanceof NumericTask.All a) {
+            for (NumericTask.Cond p : a.parts()) if (!optimistic(p, facts)) return false;
+            return true;
+        }
+        if (c instanceof NumericTask.Any a) {
+            for (NumericTask.Cond p : a.parts()) if (optimistic(p, facts)) return true;
+            return false;
+        }
+        return !(c instanceof NumericTask.Const k) || k.value();
     }
 
     private static void widen(NumericTask.NumEffect n, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {

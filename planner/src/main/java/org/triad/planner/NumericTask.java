@@ -22,8 +22,9 @@ import org.triad.planner.pddl.TypedName;
  * A PDDL 2.1 (level 2) task grounded for {@link NumericSearch}: facts and fluents numbered, every action
  * instance whose precondition can hold with its conditions compiled ({@link Cond}), its effects, numeric
  * effects and its cost. Static facts, {@code =} between objects and fluents no action changes are folded
- * away while grounding (a distance table becomes constants). A fluent an instance reads that has no value
- * in {@code :init} and that no action assigns is a {@link PlanningInputException} naming the instance.
+ * away while grounding (a distance table becomes constants). An instance that reads a fluent without a
+ * value (none in {@code :init}, and no action assigns it) can never apply, as in PDDL 2.1, and is left out;
+ * a goal that reads one is a {@link PlanningInputException} naming the fluent.
  */
 final class NumericTask {
     /** A ground condition. */
@@ -100,7 +101,11 @@ final class NumericTask {
             else staticFacts.add(key);
         }
         for (Action a : domain.actions()) ground(a);
-        goal = cond(problem.goal(), Map.of(), false, "the goal");
+        try {
+            goal = cond(problem.goal(), Map.of(), false, "the goal");
+        } catch (Undefined e) {
+            throw new PlanningInputException("the goal reads " + e.getMessage() + ", which :init gives no value and no action sets");
+        }
         initValues = new double[fluentNames.size()];
         for (int i = 0; i < fluentNames.size(); i++) initValues[i] = initFluents.getOrDefault(fluentNames.get(i), Double.NaN);
     }
@@ -185,12 +190,16 @@ final class NumericTask {
         List<String> args = new ArrayList<>();
         for (TypedName p : a.parameters()) args.add(b.get(p.name()));
         String label = "(" + a.name() + (args.isEmpty() ? "" : " " + String.join(" ", args)) + ")";
-        Cond pre = cond(a.precondition(), b, false, label);
-        if (pre == FALSE) return;
-        List<Effects> effects = new ArrayList<>();
-        double[] cost = {0};
-        effects(a.effects(), b, TRUE, effects, cost, label);
-        ops.add(new Op(a.name(), args, pre, effects, cost[0]));
+        try {
+            Cond pre = cond(a.precondition(), b, false, label);
+            if (pre == FALSE) return;
+            List<Effects> effects = new ArrayList<>();
+            double[] cost = {0};
+            effects(a.effects(), b, TRUE, effects, cost, label);
+            ops.add(new Op(a.name(), args, pre, effects, cost[0]));
+        } catch (Undefined e) {
+            // reads a fluent that never has a value: never applicable
+        }
     }
 
     private void effects(List<PddlEffect> list, Map<String, String> b, Cond when, List<Effects> out, double[] cost, String label) {
@@ -299,13 +308,8 @@ final class NumericTask {
         if (e instanceof NumericExpr.Fluent f) {
             String key = groundFluent(f, b);
             Double init = initFluents.get(key);
-            if (!changedFunctions.contains(f.name())) {
-                if (init == null) throw new PlanningInputException(label + " reads (" + key + "), which :init gives no value and no action sets");
-                return new Num(init);
-            }
-            if (init == null && !assignedFunctions.contains(f.name())) {
-                throw new PlanningInputException(label + " reads (" + key + "), which :init gives no value and no action assigns");
-            }
+            if (init == null && !assignedFunctions.contains(f.name())) throw new Undefined("(" + key + ")");
+            if (!changedFunctions.contains(f.name())) return new Num(init);
             return new Var(fluent(key));
         }
         if (e instanceof NumericExpr.Negation n) {
@@ -329,6 +333,13 @@ final class NumericTask {
             return new Num(v);
         }
         return new Bin(a.op(), l, r);
+    }
+
+    /** A fluent that has no value in any reachable state. */
+    private static final class Undefined extends RuntimeException {
+        Undefined(String fluent) {
+            super(fluent, null, false, false);
+        }
     }
 
     private static Cond all(List<Cond> parts) {

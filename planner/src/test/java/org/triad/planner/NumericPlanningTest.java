@@ -85,9 +85,13 @@ class NumericPlanningTest {
         Domain d = TestProblems.domain("numeric/battery-domain.pddl");
         Problem undefined = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (distance c2 ward) 20)", ""),
                 "undefined.pddl");
-        SolveResult r = new TriadEngine().solve(d, undefined, TIMEOUT);
+        // as in PDDL 2.1, a road without a length cannot be driven: the ward is out of reach
+        assertEquals(SolveResult.Status.UNSOLVABLE, new TriadEngine().solve(d, undefined, TIMEOUT).status());
+        Problem noCapacity = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (capacity r1) 100)", "")
+                .replace("(:goal (and", "(:goal (and (> (capacity r1) 0)"), "no-capacity.pddl");
+        SolveResult r = new TriadEngine().solve(d, noCapacity, TIMEOUT);
         assertEquals(SolveResult.Status.ERROR, r.status());
-        assertEquals("(drive r1 c2 ward) reads (distance c2 ward), which :init gives no value and no action sets", r.message());
+        assertEquals("the goal reads (capacity r1), which :init gives no value and no action sets", r.message());
 
         Domain divides = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl")
                 .replace("(decrease (battery ?r) (distance ?a ?b))", "(decrease (battery ?r) (/ (distance ?a ?b) 0))"), "divides.pddl");
