@@ -14,7 +14,7 @@ import java.util.regex.Pattern;
  * Benchmark main (not a test): Triad against Metric-FF 2.1 on numeric PDDL problems, each planner as a
  * whole process ({@code java ... SolveOnce} and {@code ff -o D -f P -s 0}), one run each with a time cap,
  * every plan checked by VAL ({@code Validate D P PLAN}: valid, and the metric's final value) and by
- * Triad's {@link PlanValidator}. Metric-FF reads {@code :fluents}, so it gets a copy of the domain with
+ * Triad's {@link PlanValidator} (VALIDATE {@code -}: Triad's validator only). Metric-FF reads {@code :fluents}, so it gets a copy of the domain with
  * {@code :numeric-fluents} renamed. Prints a Markdown table; reads only local files:
  * {@code MetricFfComparison METRIC_FF VALIDATE TIMEOUT_S DOMAIN.pddl PROBLEM.pddl [DOMAIN.pddl PROBLEM.pddl]...}
  * (Metric-FF and VAL built from their public sources, see ../shared/notes/reference-planners.md).
@@ -26,14 +26,15 @@ public final class MetricFfComparison {
             System.exit(2);
         }
         Path ff = Path.of(args[0]).toAbsolutePath();
-        Path validate = Path.of(args[1]).toAbsolutePath();
+        Path validate = args[1].equals("-") ? null : Path.of(args[1]).toAbsolutePath();
         double timeout = Double.parseDouble(args[2]);
         Path work = Files.createTempDirectory("triad-mff");
         System.out.printf("Java %s, %d cores, load average at start %.1f, cap %.0f s per planner and problem%n%n",
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout);
-        System.out.println("| problem | Triad s | Triad length | Triad VAL | Triad metric | Metric-FF s | Metric-FF length | Metric-FF VAL | Metric-FF metric |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|");
+        System.out.println("| problem | Triad s | Triad length | Triad VAL | Triad metric | Triad PlanValidator | Metric-FF s | Metric-FF length | Metric-FF VAL"
+                + " | Metric-FF metric | Metric-FF PlanValidator |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         int both = 0, triadOnly = 0, ffOnly = 0, neither = 0;
         for (int i = 3; i < args.length; i += 2) {
             Path domain = Path.of(args[i]).toAbsolutePath();
@@ -55,17 +56,36 @@ public final class MetricFfComparison {
             List<String> ffSteps = metricFfPlan(Files.readString(ffOut));
             Path ffPlan = work.resolve("ff-" + i + ".plan");
             if (ffSteps != null) Files.writeString(ffPlan, String.join("\n", ffSteps) + "\n");
-            String[] triadVal = triadSolved ? val(validate, domain, problem, triadPlan, work) : new String[] { "-", "-" };
-            String[] ffVal = ffSteps != null ? val(validate, domain, problem, ffPlan, work) : new String[] { "-", "-" };
+            String[] triadVal = triadSolved && validate != null ? val(validate, domain, problem, triadPlan, work) : new String[] { "-", "-" };
+            String[] ffVal = ffSteps != null && validate != null ? val(validate, domain, problem, ffPlan, work) : new String[] { "-", "-" };
             int triadLen = triadSolved ? (int) Files.readAllLines(triadPlan).stream().filter(l -> l.startsWith("(")).count() : 0;
-            System.out.printf(Locale.ROOT, "| %s | %.2f | %s | %s | %s | %.2f | %s | %s | %s |%n", label, triadS, triadSolved ? triadLen : "-",
-                    triadVal[0], triadVal[1], ffS, ffSteps != null ? ffSteps.size() : "-", ffVal[0], ffVal[1]);
+            System.out.printf(Locale.ROOT, "| %s | %.2f | %s | %s | %s | %s | %.2f | %s | %s | %s | %s |%n", label, triadS, triadSolved ? triadLen : "-",
+                    triadVal[0], triadVal[1], triadSolved ? replay(domain, problem, Files.readAllLines(triadPlan)) : "-", ffS,
+                    ffSteps != null ? ffSteps.size() : "-", ffVal[0], ffVal[1], ffSteps != null ? replay(domain, problem, ffSteps) : "-");
             if (triadSolved && ffSteps != null) both++;
             else if (triadSolved) triadOnly++;
             else if (ffSteps != null) ffOnly++;
             else neither++;
         }
         System.out.printf("%nsolved by both %d, by Triad only %d, by Metric-FF only %d, by neither %d%n", both, triadOnly, ffOnly, neither);
+    }
+
+    /** Triad's {@link PlanValidator} on a plan given as {@code (action args)} lines. */
+    private static String replay(Path domain, Path problem, List<String> lines) {
+        List<PddlStep> steps = new ArrayList<>();
+        for (String l : lines) {
+            String t = l.trim();
+            if (!t.startsWith("(")) continue;
+            String[] parts = t.substring(1, t.length() - 1).trim().split("\\s+");
+            steps.add(new PddlStep(parts[0], List.of(parts).subList(1, parts.length)));
+        }
+        try {
+            PlanValidator.Report r = PlanValidator.validate(org.triad.planner.pddl.PddlParser.parseDomain(domain),
+                    org.triad.planner.pddl.PddlParser.parseProblem(problem), new PddlPlan(steps));
+            return r.valid() ? "valid" : "INVALID: " + r.message().replace('|', '/');
+        } catch (Exception e) {
+            return "error: " + e.getMessage();
+        }
     }
 
     private static boolean run(List<String> command, double timeoutS, Path output) throws Exception {
