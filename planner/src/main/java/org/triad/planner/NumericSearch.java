@@ -82,7 +82,10 @@ final class NumericSearch {
         while (!open.isEmpty()) {
             int id = open.poll();
             Node n = nodes.get(id);
-            if (holds(task.goal, n.state)) return SolveResult.solved(plan(task, nodes, id), stats(groundMs, searchStart, expanded, nodes.size()));
+            if (holds(task.goal, n.state)) {
+                List<Integer> ops = eliminateRedundant(task, init, opsTo(nodes, id));
+                return SolveResult.solved(plan(task, ops), stats(groundMs, searchStart, expanded, nodes.size()));
+            }
             if (++expanded > EXPANSION_BUDGET || System.nanoTime() > deadline) {
                 return SolveResult.timeout(stats(groundMs, searchStart, expanded, nodes.size()));
             }
@@ -105,14 +108,43 @@ final class NumericSearch {
         return new SolveResult.Stats(groundMs, (System.nanoTime() - searchStart) / 1e6, expanded, evaluated);
     }
 
-    private static PddlPlan plan(NumericTask task, List<Node> nodes, int id) {
+    private static List<Integer> opsTo(List<Node> nodes, int id) {
+        List<Integer> ops = new ArrayList<>();
+        for (int i = id; nodes.get(i).parent >= 0; i = nodes.get(i).parent) ops.add(nodes.get(i).op);
+        Collections.reverse(ops);
+        return ops;
+    }
+
+    private static PddlPlan plan(NumericTask task, List<Integer> ops) {
         List<PddlStep> steps = new ArrayList<>();
-        for (int i = id; nodes.get(i).parent >= 0; i = nodes.get(i).parent) {
-            NumericTask.Op op = task.ops.get(nodes.get(i).op);
-            steps.add(new PddlStep(op.name(), op.args()));
-        }
-        Collections.reverse(steps);
+        for (int o : ops) steps.add(new PddlStep(task.ops.get(o).name(), task.ops.get(o).args()));
         return new PddlPlan(steps);
+    }
+
+    /**
+     * Greedy action elimination (Nakhost and Müller): drop one step at a time, first to last, wherever the
+     * rest still applies and reaches the goal. Bounded by the square of the plan's length in step replays.
+     */
+    static List<Integer> eliminateRedundant(NumericTask task, Key init, List<Integer> plan) {
+        List<Integer> current = new ArrayList<>(plan);
+        for (int i = 0; i < current.size(); ) {
+            List<Integer> candidate = new ArrayList<>(current);
+            candidate.remove(i);
+            if (reachesGoal(task, init, candidate)) current = candidate;
+            else i++;
+        }
+        return current;
+    }
+
+    private static boolean reachesGoal(NumericTask task, Key init, List<Integer> ops) {
+        Key s = init;
+        for (int o : ops) {
+            NumericTask.Op op = task.ops.get(o);
+            if (!holds(op.pre(), s)) return false;
+            s = apply(op, s);
+            if (s == null) return false;
+        }
+        return holds(task.goal, s);
     }
 
     /** The state after {@code op}, or null when a value it computes is not a finite number. */
