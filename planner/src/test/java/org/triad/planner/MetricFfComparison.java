@@ -103,7 +103,10 @@ public final class MetricFfComparison {
         if (at < 0) return null;
         List<String> steps = new ArrayList<>();
         Matcher m = Pattern.compile("(?m)^\\s*(?:step\\s+)?\\d+: (.+)$").matcher(output.substring(at));
-        while (m.find()) steps.add("(" + m.group(1).trim().toLowerCase(Locale.ROOT) + ")");
+        while (m.find()) {
+            String step = m.group(1).trim().toLowerCase(Locale.ROOT);
+            if (!step.equals("reach-goal")) steps.add("(" + step + ")"); // Metric-FF's own action for a goal it compiled
+        }
         return steps;
     }
 

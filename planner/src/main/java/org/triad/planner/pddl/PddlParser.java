@@ -251,7 +251,12 @@ public final class PddlParser {
         List<SExpr> pending = new ArrayList<>();
         for (int i = 0; i < items.size(); i++) {
             SExpr e = items.get(i);
-            if (e.isSymbol("-")) {
+            if (!e.isList() && e.symbol.length() > 1 && e.symbol.startsWith("-") && Character.isLetter(e.symbol.charAt(1))) {
+                // "depot market -place": the dash glued to the type, as FF's and VAL's lexers read it (IPC 2023 tpp)
+                if (pending.isEmpty()) throw err(e, "'-' without names before it");
+                for (SExpr n : pending) out.add(TypedName.of(n.symbol, e.symbol.substring(1)));
+                pending.clear();
+            } else if (e.isSymbol("-")) {
                 if (pending.isEmpty()) throw err(e, "'-' without names before it");
                 if (i + 1 >= items.size()) throw err(e, "missing type after '-'");
                 List<String> types = typeSpec(items.get(++i));

@@ -51,6 +51,12 @@ class NumericPddlTest {
     }
 
     @Test
+    void aDashGluedToItsTypeNamesTheType() {
+        Domain d = PddlParser.parseDomain("(define (domain d) (:types place - object depot market -place) (:predicates (p)))", "d.pddl");
+        assertEquals(List.of(TypedName.of("place", "object"), TypedName.of("depot", "place"), TypedName.of("market", "place")), d.types());
+    }
+
+    @Test
     void theNumericRequirementsAreAccepted() {
         Domain d = PddlParser.parseDomain("(define (domain d) (:requirements :numeric-fluents :fluents) (:predicates (p)))", "d.pddl");
         assertEquals(List.of(":numeric-fluents", ":fluents"), d.requirements());
