@@ -216,6 +216,12 @@ final class NumericTask {
                 if (c != FALSE) effects(w.body(), b, c == TRUE ? when : all(List.of(when, c)), out, cost, label);
             } else if (e instanceof PddlEffect.Increase inc) {
                 cost[0] += costOf(inc.amount(), b, label);
+            } else if (e instanceof PddlEffect.NumericEffect n && n.kind().equals("increase") && n.target().name().equals("total-cost")
+                    && n.target().args().isEmpty()) {
+                // the metric's accumulator is not part of the state (every state would differ by its cost);
+                // a cost that depends on the state counts as 0 for the tie-breaking cost of the search
+                Expr amount = expr(n.value(), b, label);
+                if (amount instanceof Num v) cost[0] += v.value();
             } else if (e instanceof PddlEffect.NumericEffect n) {
                 numeric.add(new NumEffect(n.kind(), fluent(groundFluent(n.target(), b)), expr(n.value(), b, label)));
             }
@@ -232,7 +238,7 @@ final class NumericTask {
         List<String> args = new ArrayList<>();
         for (String x : f.args()) args.add(b.getOrDefault(x, x));
         Double v = constantCosts.get(NumericValues.key(f.name(), args));
-        if (v == null) throw new PlanningInputException(label + " costs (" + NumericValues.key(f.name(), args) + "), which :init does not give a value");
+        if (v == null) throw new Undefined("(" + NumericValues.key(f.name(), args) + ")"); // as in PDDL 2.1: never applicable
         return v;
     }
 

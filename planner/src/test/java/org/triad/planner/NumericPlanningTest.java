@@ -49,6 +49,16 @@ class NumericPlanningTest {
     }
 
     @Test
+    void aCostThatDependsOnTheStateIsNotPartOfTheState() {
+        // as in IPC 2023 tpp: total-cost increased by an expression over fluents
+        Domain d = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl").replace("(travelled))", "(total-cost))")
+                .replace("(increase (travelled) (distance ?a ?b))", "(increase (total-cost) (* 2 (battery ?r)))"), "cost.pddl");
+        Problem p = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (travelled) 0)", "(= (total-cost) 0)")
+                .replace("minimize (travelled)", "minimize (total-cost)"), "cost.pddl");
+        assertEquals(6, solve(d, p).length());
+    }
+
+    @Test
     void countersAreOrderedAndThePlanIsTheSameEveryTime() {
         Domain d = TestProblems.domain("numeric/counters-domain.pddl");
         Problem p = TestProblems.problem("numeric/counters-problem.pddl");
