@@ -139,10 +139,16 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 		if (EcoreUtil2.getContainerOfType(call, Situation.class) != null) {
 			return;
 		}
+		Property p = call.getProperty();
+		if (p == null || p.eIsProxy() || p.getParameters().size() != call.getArguments().size()) {
+			return; // reported as an unknown property or a wrong number of arguments
+		}
 		for (int i = 0; i < call.getArguments().size(); i++) {
-			if (call.getArguments().get(i) instanceof PropertyCall inner && TriadTypeSystem.typeOf(inner).kind() == TriadType.Kind.BOOLEAN) {
+			// only where a boolean is expected: elsewhere the argument's type is the finding (expr.argument-type)
+			if (call.getArguments().get(i) instanceof PropertyCall inner && TriadTypeSystem.typeOf(inner).kind() == TriadType.Kind.BOOLEAN
+					&& TriadTypeSystem.typeOf(p.getParameters().get(i).getType()).kind() == TriadType.Kind.BOOLEAN) {
 				String text = sourceText(inner);
-				error("'" + text + "' is a condition and cannot be the argument of '" + (call.getProperty().eIsProxy() ? "?" : call.getProperty().getName())
+				error("'" + text + "' is a condition and cannot be the argument of '" + p.getName()
 						+ "': the planner passes objects and values only; give the action or goal a boolean parameter b, pass b, and require '"
 						+ text + " == b'", call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.CONDITION_AS_ARGUMENT);
 			}
