@@ -10,6 +10,7 @@ import org.triad.planner.pddl.Action;
 import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.NumericExpr;
 import org.triad.planner.pddl.PddlWriter;
 import org.triad.planner.pddl.Problem;
 import org.triad.planner.pddl.TypedName;
@@ -18,7 +19,9 @@ import org.triad.planner.pddl.TypedName;
  * Replays a plan on the lifted domain (independently of the grounder): checks each step's action,
  * argument types and precondition (any ADL formula), collects the effects whose {@code when}
  * conditions hold in the state before the step, applies all deletes then all adds, and checks the
- * goal at the end.
+ * goal at the end. Numeric fluents (PDDL 2.1) are replayed too: comparisons are evaluated in the state
+ * before the step, numeric effects read their values there and apply with the others; a fluent without
+ * a value, a division by zero or a result that is not a finite number makes the plan invalid at that step.
  */
 public final class PlanValidator {
     private PlanValidator() { }
@@ -39,7 +42,9 @@ public final class PlanValidator {
             return new Report(false, -1, e.getMessage(), false);
         }
         Set<Formula.Atom> state = new HashSet<>(problem.init());
-        Evaluator ev = new Evaluator(universe, state);
+        Map<String, Double> fluents = new HashMap<>();
+        for (Problem.NumericFact f : problem.numericInit()) fluents.put(NumericValues.key(f.function(), f.args()), f.value());
+        Evaluator ev = new Evaluator(universe, state, fluents);
         Map<String, Integer> strata;
         try {
             strata = DerivedStrata.of(domain);
@@ -66,16 +71,27 @@ public final class PlanValidator {
                 }
                 binding.put(p.name(), arg);
             }
-            String failure = ev.explainFalse(a.precondition(), binding);
-            if (failure != null) return new Report(false, i, where + "precondition not satisfied: " + failure, false);
-            List<Formula.Atom> adds = new ArrayList<>();
-            List<Formula.Atom> dels = new ArrayList<>();
-            ev.effects(a.effects(), binding, adds, dels);
-            state.removeAll(dels);
-            state.addAll(adds);
-            ev.derive(domain, strata);
+            try {
+                String failure = ev.explainFalse(a.precondition(), binding);
+                if (failure != null) return new Report(false, i, where + "precondition not satisfied: " + failure, false);
+                List<Formula.Atom> adds = new ArrayList<>();
+                List<Formula.Atom> dels = new ArrayList<>();
+                Map<String, Double> updates = new HashMap<>();
+                ev.effects(a.effects(), binding, adds, dels, updates);
+                state.removeAll(dels);
+                state.addAll(adds);
+                fluents.putAll(updates);
+                ev.derive(domain, strata);
+            } catch (NumericValues.Fault e) {
+                return new Report(false, i, where + e.getMessage(), false);
+            }
         }
-        String goalFailure = ev.explainFalse(problem.goal(), Map.of());
+        String goalFailure;
+        try {
+            goalFailure = ev.explainFalse(problem.goal(), Map.of());
+        } catch (NumericValues.Fault e) {
+            return new Report(false, -1, "goal: " + e.getMessage(), false);
+        }
         if (goalFailure != null) return new Report(false, -1, "goal not satisfied at the end: " + goalFailure, false);
         return new Report(true, -1, "valid", true);
     }
@@ -83,10 +99,21 @@ public final class PlanValidator {
     private static final class Evaluator {
         private final ObjectUniverse universe;
         private final Set<Formula.Atom> state;
+        private final Map<String, Double> fluents;
 
-        Evaluator(ObjectUniverse universe, Set<Formula.Atom> state) {
+        Evaluator(ObjectUniverse universe, Set<Formula.Atom> state, Map<String, Double> fluents) {
             this.universe = universe;
             this.state = state;
+            this.fluents = fluents;
+        }
+
+        private double value(NumericExpr e, Map<String, String> b) {
+            return NumericValues.evaluate(NumericValues.ground(e, b), f -> {
+                String key = NumericValues.key(f.name(), f.args());
+                Double v = fluents.get(key);
+                if (v == null) throw new NumericValues.Fault("(" + key + ") has no value (the problem's :init does not give it one)");
+                return v;
+            });
         }
 
         private Formula.Atom ground(Formula.Atom a, Map<String, String> b) {
@@ -121,6 +148,7 @@ public final class PlanValidator {
                 return false;
             }
             if (f instanceof Formula.Imply i) return !holds(i.condition(), b) || holds(i.consequence(), b);
+            if (f instanceof Formula.Compare c) return c.holds(value(c.left(), b), value(c.right(), b));
             if (f instanceof Formula.Exists e) {
                 // nested exists over a conjunction: bind one variable at a time and test each conjunct
                 // as soon as its variables are bound, instead of enumerating every combination
@@ -188,6 +216,10 @@ public final class PlanValidator {
             } else if (f instanceof Formula.Imply i) {
                 out.addAll(freeVariables(i.condition()));
                 out.addAll(freeVariables(i.consequence()));
+            } else if (f instanceof Formula.Compare c) {
+                for (NumericExpr.Fluent fl : org.triad.planner.pddl.NumericParts.fluents(c)) {
+                    for (String t : fl.args()) if (t.startsWith("?")) out.add(t);
+                }
             } else {
                 boolean universal = f instanceof Formula.Forall;
                 List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
@@ -228,6 +260,13 @@ public final class PlanValidator {
             }
             if (f instanceof Formula.Imply i) {
                 return explainFalse(i.condition(), b) != null ? null : explainFalse(i.consequence(), b);
+            }
+            if (f instanceof Formula.Compare c) {
+                double l = value(c.left(), b);
+                double r = value(c.right(), b);
+                Formula ground = new Formula.Compare(c.op(), NumericValues.ground(c.left(), b), NumericValues.ground(c.right(), b));
+                return c.holds(l, r) ? null : PddlWriter.formula(ground) + " is false (" + PddlWriter.number(l) + " " + c.op() + " "
+                        + PddlWriter.number(r) + ")";
             }
             boolean universal = f instanceof Formula.Forall;
             List<TypedName> vars = universal ? ((Formula.Forall) f).variables() : ((Formula.Exists) f).variables();
@@ -275,15 +314,28 @@ public final class PlanValidator {
             }
         }
 
-        void effects(List<PddlEffect> effects, Map<String, String> b, List<Formula.Atom> adds, List<Formula.Atom> dels) {
+        void effects(List<PddlEffect> effects, Map<String, String> b, List<Formula.Atom> adds, List<Formula.Atom> dels,
+                     Map<String, Double> updates) {
             for (PddlEffect e : effects) {
                 if (e instanceof PddlEffect.Add a) adds.add(ground(a.atom(), b));
                 else if (e instanceof PddlEffect.Delete d) dels.add(ground(d.atom(), b));
                 else if (e instanceof PddlEffect.Forall q) {
-                    for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels);
+                    for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, adds, dels, updates);
                 } else if (e instanceof PddlEffect.When w) {
                     // the state is still the one before the action: all effects are collected before any applies
-                    if (holds(w.condition(), b)) effects(w.body(), b, adds, dels);
+                    if (holds(w.condition(), b)) effects(w.body(), b, adds, dels, updates);
+                } else if (e instanceof PddlEffect.NumericEffect n) {
+                    List<String> args = new ArrayList<>(n.target().args().size());
+                    for (String t : n.target().args()) args.add(b.getOrDefault(t, t));
+                    String key = NumericValues.key(n.target().name(), args);
+                    double amount = value(n.value(), b);
+                    Double current = fluents.get(key);
+                    if (current == null && !n.kind().equals("assign")) {
+                        throw new NumericValues.Fault("(" + n.kind() + " (" + key + ") ...): (" + key + ") has no value to " + n.kind());
+                    }
+                    if (updates.containsKey(key)) throw new NumericValues.Fault("two effects change (" + key + ") in one step");
+                    updates.put(key, NumericValues.checked(n.apply(current == null ? 0 : current, amount),
+                            "(" + n.kind() + " (" + key + ") " + PddlWriter.number(amount) + ")"));
                 }
             }
         }

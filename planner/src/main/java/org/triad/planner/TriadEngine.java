@@ -127,6 +127,9 @@ public final class TriadEngine implements PddlPlanner {
 
     @Override
     public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
+        if (NumericSearch.isNumeric(domain, problem)) {
+            return NumericSearch.solve(domain, problem, timeout); // PDDL 2.1 numeric fluents: a search of their own
+        }
         long start = System.nanoTime();
         long deadline = start + timeout.toNanos();
         GroundedProblem.Query q;

@@ -32,6 +32,8 @@ public final class CommonIssueCodes {
 	public static final String INCOMPATIBLE_OPERANDS = "expr.incompatible-operands";
 	/** An ordering comparison on values that are not numbers. */
 	public static final String NOT_NUMERIC = "expr.not-numeric";
+	/** A Boolean property passed as the argument of a property: the planner passes objects and values, not conditions. */
+	public static final String CONDITION_AS_ARGUMENT = "plan.condition-as-argument";
 	/** A property call with the wrong number of arguments. */
 	public static final String ARGUMENT_COUNT = "expr.argument-count";
 	/** A property call argument whose type does not fit the parameter. */

@@ -102,14 +102,57 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 
 	private void requireBoolean(Expression operand, TriadType type, String operator, EStructuralFeature feature, EObject owner) {
 		if (!type.isBoolean()) {
-			error("operand of '" + operator + "' must be boolean, but is " + type.display(), owner, feature,
-					CommonIssueCodes.NOT_BOOLEAN_OPERAND);
+			error(notACondition(operand, type, operator), owner, feature, CommonIssueCodes.NOT_BOOLEAN_OPERAND);
 		}
+	}
+
+	/** Names the operand, what it is and how to make a condition of it (the operator joins or negates conditions). */
+	private static String notACondition(Expression operand, TriadType type, String operator) {
+		String text = sourceText(operand);
+		String role = operator.equals("!") ? "'!' negates a condition" : "'" + operator + "' joins conditions";
+		String example = type.isNumeric() ? text + " > 0" : text + " == " + (type.kind() == TriadType.Kind.STRING ? "\"...\"" : "value");
+		return "'" + text + "' is " + article(type.display()) + " " + type.display() + ", not a condition (true or false): " + role
+				+ "; compare it, e.g. '" + example + "'";
+	}
+
+	private static String article(String word) {
+		return "aeiouAEIOU".indexOf(word.charAt(0)) >= 0 ? "an" : "a";
+	}
+
+	/** The expression as written, blanks collapsed. */
+	protected static String sourceText(EObject e) {
+		org.eclipse.xtext.nodemodel.ICompositeNode node = org.eclipse.xtext.nodemodel.util.NodeModelUtils.findActualNodeFor(e);
+		return node == null ? "?" : org.eclipse.xtext.nodemodel.util.NodeModelUtils.getTokenText(node).replaceAll("\\s+", " ").trim();
 	}
 
 	@Check
 	public void checkNotOperand(NotExpression e) {
 		requireBoolean(e.getOperand(), TriadTypeSystem.typeOf(e.getOperand()), "!", P.getNotExpression_Operand(), e);
+	}
+
+	/**
+	 * A Boolean property passed as an argument ({@code ready(handEmpty())}): the planner passes objects
+	 * and values, and a condition is neither (situations report their arguments themselves).
+	 */
+	@Check
+	public void checkConditionAsArgument(PropertyCall call) {
+		if (EcoreUtil2.getContainerOfType(call, Situation.class) != null) {
+			return;
+		}
+		Property p = call.getProperty();
+		if (p == null || p.eIsProxy() || p.getParameters().size() != call.getArguments().size()) {
+			return; // reported as an unknown property or a wrong number of arguments
+		}
+		for (int i = 0; i < call.getArguments().size(); i++) {
+			// only where a boolean is expected: elsewhere the argument's type is the finding (expr.argument-type)
+			if (call.getArguments().get(i) instanceof PropertyCall inner && TriadTypeSystem.typeOf(inner).kind() == TriadType.Kind.BOOLEAN
+					&& TriadTypeSystem.typeOf(p.getParameters().get(i).getType()).kind() == TriadType.Kind.BOOLEAN) {
+				String text = sourceText(inner);
+				error("'" + text + "' is a condition and cannot be the argument of '" + p.getName()
+						+ "': the planner passes objects and values only; give the action or goal a boolean parameter b, pass b, and require '"
+						+ text + " == b'", call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.CONDITION_AS_ARGUMENT);
+			}
+		}
 	}
 
 	@Check

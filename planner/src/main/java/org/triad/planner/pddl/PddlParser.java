@@ -110,6 +110,15 @@ public final class PddlParser {
         Set<String> declared = new HashSet<>();
         preds.forEach(p -> declared.add(p.name()));
         for (int i = 0; i < actions.size(); i++) checkPredicates(actions.get(i), declared, actionExprs.get(i));
+        Set<String> declaredFunctions = new HashSet<>();
+        functions.forEach(f -> declaredFunctions.add(f.name()));
+        for (int i = 0; i < actions.size(); i++) {
+            for (NumericExpr.Fluent f : NumericParts.fluents(actions.get(i))) {
+                if (!declaredFunctions.contains(f.name())) {
+                    throw err(actionExprs.get(i), "action '" + actions.get(i).name() + "' uses undeclared function '" + f.name() + "'");
+                }
+            }
+        }
         Set<String> effectPredicates = new HashSet<>();
         for (Action a : actions) {
             List<Formula.Atom> atoms = new ArrayList<>();
@@ -133,9 +142,10 @@ public final class PddlParser {
     /** Requirements the parser and engine handle. */
     static final Set<String> SUPPORTED_REQUIREMENTS = Set.of(":strips", ":typing", ":negative-preconditions",
             ":disjunctive-preconditions", ":equality", ":existential-preconditions", ":universal-preconditions",
-            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs", ":derived-predicates");
+            ":quantified-preconditions", ":conditional-effects", ":adl", ":action-costs", ":derived-predicates",
+            ":numeric-fluents", ":fluents");
     /** Requirements of PDDL 1.2-3.1 that this planner does not handle (it would plan wrongly if it ignored them). */
-    static final Set<String> UNSUPPORTED_REQUIREMENTS = Set.of(":numeric-fluents", ":fluents", ":object-fluents",
+    static final Set<String> UNSUPPORTED_REQUIREMENTS = Set.of(":object-fluents",
             ":durative-actions", ":duration-inequalities", ":continuous-effects",
             ":timed-initial-literals", ":preferences", ":constraints", ":time", ":expression-evaluation",
             ":domain-axioms", ":safety-constraints", ":open-world", ":true-negation", ":ucpop", ":foreach-expansions",
@@ -241,7 +251,12 @@ public final class PddlParser {
         List<SExpr> pending = new ArrayList<>();
         for (int i = 0; i < items.size(); i++) {
             SExpr e = items.get(i);
-            if (e.isSymbol("-")) {
+            if (!e.isList() && e.symbol.length() > 1 && e.symbol.startsWith("-") && Character.isLetter(e.symbol.charAt(1))) {
+                // "depot market -place": the dash glued to the type, as FF's and VAL's lexers read it (IPC 2023 tpp)
+                if (pending.isEmpty()) throw err(e, "'-' without names before it");
+                for (SExpr n : pending) out.add(TypedName.of(n.symbol, e.symbol.substring(1)));
+                pending.clear();
+            } else if (e.isSymbol("-")) {
                 if (pending.isEmpty()) throw err(e, "'-' without names before it");
                 if (i + 1 >= items.size()) throw err(e, "missing type after '-'");
                 List<String> types = typeSpec(items.get(++i));
@@ -309,6 +324,9 @@ public final class PddlParser {
             checkVariables(i.consequence(), bound, at, action);
         } else if (f instanceof Formula.Forall q) checkVariables(q.body(), extend(bound, q.variables()), at, action);
         else if (f instanceof Formula.Exists q) checkVariables(q.body(), extend(bound, q.variables()), at, action);
+        else if (f instanceof Formula.Compare c) {
+            for (NumericExpr.Fluent fl : NumericParts.fluents(c)) fl.args().forEach(x -> checkVar(x, bound, at, action));
+        }
     }
 
     private void collectEffectAtomsBound(List<PddlEffect> effects, Set<String> bound, SExpr at, String action) {
@@ -319,6 +337,8 @@ public final class PddlParser {
             else if (e instanceof PddlEffect.When w) {
                 checkVariables(w.condition(), bound, at, action);
                 collectEffectAtomsBound(w.body(), bound, at, action);
+            } else if (e instanceof PddlEffect.NumericEffect n) {
+                for (NumericExpr.Fluent fl : NumericParts.fluents(n)) fl.args().forEach(x -> checkVar(x, bound, at, action));
             }
         }
     }
@@ -360,7 +380,13 @@ public final class PddlParser {
                 return new Formula.Imply(formula(args.get(0)), formula(args.get(1)));
             case "=":
                 if (args.size() != 2) throw err(e, "'=' takes exactly two terms");
-                return new Formula.Equals(name(args.get(0), "a term"), name(args.get(1), "a term"));
+                if (isObjectTerm(args.get(0)) && isObjectTerm(args.get(1))) {
+                    return new Formula.Equals(name(args.get(0), "a term"), name(args.get(1), "a term"));
+                }
+                return new Formula.Compare("=", numericExpr(args.get(0)), numericExpr(args.get(1)));
+            case "<", "<=", ">", ">=":
+                if (args.size() != 2) throw err(e, "'" + head + "' takes exactly two numeric expressions");
+                return new Formula.Compare(head, numericExpr(args.get(0)), numericExpr(args.get(1)));
             case "forall":
             case "exists": {
                 if (args.size() != 2) throw err(e, "'" + head + "' takes a variable list and a formula");
@@ -409,14 +435,18 @@ public final class PddlParser {
                 }
                 return List.of(new PddlEffect.When(condition, body));
             }
-            case "increase": {
-                if (args.size() != 2) throw err(e, "'increase' takes a function and an amount");
-                List<SExpr> f = list(args.get(0), "a function term such as (total-cost)");
-                if (f.size() != 1) throw err(args.get(0), "only '(increase (total-cost) X)' is supported");
-                return List.of(new PddlEffect.Increase(name(f.get(0), "a function name"), numeric(args.get(1))));
+            case "increase", "decrease", "assign", "scale-up", "scale-down": {
+                if (args.size() != 2) throw err(e, "'" + head + "' takes a function term and a numeric expression");
+                List<SExpr> f = list(args.get(0), "a function term such as (battery ?r)");
+                if (f.isEmpty()) throw err(args.get(0), "empty function term");
+                NumericExpr value = numericExpr(args.get(1));
+                if (head.equals("increase") && f.size() == 1 && "total-cost".equals(f.get(0).symbol)
+                        && (value instanceof NumericExpr.Number || value instanceof NumericExpr.Fluent)) {
+                    return List.of(new PddlEffect.Increase("total-cost", numeric(args.get(1)))); // an action cost
+                }
+                if (!(numericExpr(args.get(0)) instanceof NumericExpr.Fluent target)) throw err(args.get(0), "expected a function term");
+                return List.of(new PddlEffect.NumericEffect(head, target, value));
             }
-            case "decrease", "assign", "scale-up", "scale-down":
-                throw err(e, "numeric effect '" + head + "' is not supported (only increase of total-cost)");
             default: {
                 Formula f = formula(e);
                 if (!(f instanceof Formula.Atom a)) throw err(e, "expected an atom in an effect");
@@ -425,10 +455,55 @@ public final class PddlParser {
         }
     }
 
+    /** An object name or variable (not a number, not a function term): the operand of object equality. */
+    private static boolean isObjectTerm(SExpr e) {
+        if (e.isList()) return false;
+        try {
+            Double.parseDouble(e.symbol);
+            return false;
+        } catch (NumberFormatException ex) {
+            return true;
+        }
+    }
+
+    /** A PDDL 2.1 numeric expression: a number, {@code (f args)}, {@code (+ a b ...)}, {@code (- a b)}, {@code (- a)}, {@code (* a b ...)}, {@code (/ a b)}. */
+    private NumericExpr numericExpr(SExpr e) {
+        if (!e.isList()) {
+            double v;
+            try {
+                v = Double.parseDouble(e.symbol);
+            } catch (NumberFormatException ex) {
+                throw err(e, "expected a number or a function term such as (battery ?r), found '" + e.symbol + "'");
+            }
+            if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
+            return new NumericExpr.Number(v);
+        }
+        if (e.items.isEmpty()) throw err(e, "empty numeric expression '()'");
+        String head = name(e.items.get(0), "a function name or an arithmetic operator");
+        List<SExpr> args = e.items.subList(1, e.items.size());
+        if (head.length() == 1 && "+-*/".indexOf(head.charAt(0)) >= 0) {
+            char op = head.charAt(0);
+            if (op == '-' && args.size() == 1) return new NumericExpr.Negation(numericExpr(args.get(0)));
+            boolean nary = op == '+' || op == '*';
+            if (args.size() < 2 || !nary && args.size() != 2) {
+                throw err(e, "'" + head + "' takes " + (nary ? "two or more" : op == '-' ? "one or two" : "two") + " numeric expressions");
+            }
+            NumericExpr result = numericExpr(args.get(0));
+            for (SExpr a : args.subList(1, args.size())) result = new NumericExpr.Arithmetic(op, result, numericExpr(a));
+            return result;
+        }
+        if (head.startsWith("?") || head.startsWith(":")) throw err(e.items.get(0), "expected a function name, found '" + head + "'");
+        List<String> terms = new ArrayList<>();
+        for (SExpr a : args) terms.add(name(a, "a term (object or variable)"));
+        return new NumericExpr.Fluent(head, terms);
+    }
+
     private NumericTerm numeric(SExpr e) {
         if (!e.isList()) {
             try {
-                return new NumericTerm.Constant(Double.parseDouble(e.symbol));
+                double v = Double.parseDouble(e.symbol);
+                if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
+                return new NumericTerm.Constant(v);
             } catch (NumberFormatException ex) {
                 throw err(e, "expected a number or a function term, found '" + e.symbol + "'");
             }

@@ -53,7 +53,7 @@ public final class PddlWriter {
         return sb.append(")\n").toString();
     }
 
-    static String number(double v) {
+    public static String number(double v) {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 
@@ -94,6 +94,7 @@ public final class PddlWriter {
         if (f instanceof Formula.Or o) return nary("or", o.parts());
         if (f instanceof Formula.Imply i) return "(imply " + formula(i.condition()) + " " + formula(i.consequence()) + ")";
         if (f instanceof Formula.Forall q) return "(forall (" + typed(q.variables()) + ") " + formula(q.body()) + ")";
+        if (f instanceof Formula.Compare c) return "(" + c.op() + " " + expression(c.left()) + " " + expression(c.right()) + ")";
         Formula.Exists q = (Formula.Exists) f;
         return "(exists (" + typed(q.variables()) + ") " + formula(q.body()) + ")";
     }
@@ -115,8 +116,18 @@ public final class PddlWriter {
         if (e instanceof PddlEffect.Delete d) return "(not " + atom(d.atom()) + ")";
         if (e instanceof PddlEffect.Forall q) return "(forall (" + typed(q.variables()) + ") " + effects(q.body()) + ")";
         if (e instanceof PddlEffect.When w) return "(when " + formula(w.condition()) + " " + effects(w.body()) + ")";
+        if (e instanceof PddlEffect.NumericEffect n) return "(" + n.kind() + " " + expression(n.target()) + " " + expression(n.value()) + ")";
         PddlEffect.Increase i = (PddlEffect.Increase) e;
         return "(increase (" + i.function() + ") " + numeric(i.amount()) + ")";
+    }
+
+    /** A numeric expression of PDDL 2.1. */
+    public static String expression(NumericExpr e) {
+        if (e instanceof NumericExpr.Number n) return number(n.value());
+        if (e instanceof NumericExpr.Fluent f) return f.args().isEmpty() ? "(" + f.name() + ")" : "(" + f.name() + " " + String.join(" ", f.args()) + ")";
+        if (e instanceof NumericExpr.Negation n) return "(- " + expression(n.operand()) + ")";
+        NumericExpr.Arithmetic a = (NumericExpr.Arithmetic) e;
+        return "(" + a.op() + " " + expression(a.left()) + " " + expression(a.right()) + ")";
     }
 
     private static String numeric(NumericTerm t) {

@@ -209,10 +209,10 @@ class PddlParserTest {
     void checksRequirementsAndNamesEachUnsupportedOneAtItsPlace() {
         Domain d = PddlParser.parseDomain("(define (domain x) (:requirements :STRIPS :typing :adl :action-costs) (:predicates (p)))", "ok.pddl");
         assertEquals(List.of(":strips", ":typing", ":adl", ":action-costs"), d.requirements());
-        PddlParseException e = domainError("(define (domain x)\n  (:requirements :strips :durative-actions :fluents :strps)\n  (:predicates (p)))");
+        PddlParseException e = domainError("(define (domain x)\n  (:requirements :strips :durative-actions :preferences :strps)\n  (:predicates (p)))");
         assertEquals(2, e.line());
         assertEquals(26, e.column());
-        assertTrue(e.detail().startsWith("unsupported requirements ':durative-actions', ':fluents' (2:44), ':strps' (2:53) (not a PDDL requirement);"),
+        assertTrue(e.detail().startsWith("unsupported requirements ':durative-actions', ':preferences' (2:44), ':strps' (2:57) (not a PDDL requirement);"),
                 e.detail());
         assertTrue(e.detail().contains("supports :action-costs :adl"), e.detail());
         PddlParseException inProblem = assertThrows(PddlParseException.class, () -> PddlParser.parseProblem(

@@ -11,7 +11,8 @@ import org.triad.planner.TestProblems;
 class PddlWriterTest {
     @ParameterizedTest
     @ValueSource(strings = {"hospital/domain.pddl", "ipc/blocks/domain.pddl", "ipc/depot/domain.pddl",
-            "ipc/elevators/p01-domain.pddl", "ipc/gripper/domain.pddl", "ipc/logistics00/domain.pddl", "ipc/miconic/domain.pddl"})
+            "ipc/elevators/p01-domain.pddl", "ipc/gripper/domain.pddl", "ipc/logistics00/domain.pddl", "ipc/miconic/domain.pddl",
+            "numeric/battery-domain.pddl", "numeric/counters-domain.pddl"})
     void domainRoundTrips(String path) {
         Domain d = TestProblems.domain(path);
         String text = PddlWriter.write(d);
@@ -21,7 +22,7 @@ class PddlWriterTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"hospital/p-10-c.pddl", "ipc/blocks/probBLOCKS-4-0.pddl", "ipc/elevators/p01.pddl",
-            "ipc/logistics00/problogistics-10-0.pddl"})
+            "ipc/logistics00/problogistics-10-0.pddl", "numeric/battery-problem.pddl", "numeric/counters-problem.pddl"})
     void problemRoundTrips(String path) {
         Problem p = TestProblems.problem(path);
         assertEquals(p, PddlParser.parseProblem(PddlWriter.write(p), "written"));

@@ -115,8 +115,9 @@ public final class PddlTranslator {
 		List<Action> pddlActions = new ArrayList<>();
 		Map<String, ActionSchema> actions = new LinkedHashMap<>();
 		Set<String> requirements = new LinkedHashSet<>(List.of(":strips", ":typing"));
+		NumberOrder order = new NumberOrder();
 		for (ActionSchema a : schema.actions()) {
-			pddlActions.add(new ActionTranslation(a, names, domainConstants, requirements).action());
+			pddlActions.add(new ActionTranslation(a, names, domainConstants, requirements, order).action());
 			actions.put(PddlNames.action(a.actor(), a.name()), a);
 		}
 		// objects of the state, then values the state uses
@@ -139,7 +140,10 @@ public final class PddlTranslator {
 			}
 			init.add(new Formula.Atom(PddlNames.predicate(atom.actor(), atom.property()), args));
 		}
-		Formula goal = new GroundTranslation(names, binding, requirements).formula(goalCondition);
+		Formula goal = new GroundTranslation(names, binding, requirements, order).formula(goalCondition);
+		if (order.used()) {
+			init.addAll(order.facts(names));
+		}
 
 		List<TypedName> types = new ArrayList<>();
 		for (TypeSchema t : schema.types().values()) {
@@ -158,6 +162,9 @@ public final class PddlTranslator {
 				params.add(TypedName.of("?value", PddlNames.type(p.type())));
 			}
 			predicates.add(new PredicateDecl(PddlNames.predicate(p.actor(), p.name()), params));
+		}
+		if (order.used()) {
+			predicates.addAll(order.predicates());
 		}
 		List<TypedName> constants = new ArrayList<>();
 		for (String c : domainConstants) {
@@ -190,13 +197,18 @@ public final class PddlTranslator {
 	private abstract class Formulas {
 		final PddlNames names;
 		final Set<String> requirements;
+		final NumberOrder order;
 
-		Formulas(PddlNames names, Set<String> requirements) {
+		Formulas(PddlNames names, Set<String> requirements, NumberOrder order) {
 			this.names = names;
 			this.requirements = requirements;
+			this.order = order;
 		}
 
 		abstract String term(Expr e);
+
+		/** {@code <}, {@code <=}, {@code >} or {@code >=} on numbers. */
+		abstract Formula ordering(Expr.Compare c);
 
 		Formula formula(Expr e) {
 			if (e instanceof Expr.And) {
@@ -227,15 +239,26 @@ public final class PddlTranslator {
 					}
 					return eq;
 				}
-				throw new PddlTranslationException("'" + c.op().symbol + "' on numbers cannot be planned with STRIPS: " + Exprs.show(c));
+				return ordering(c);
 			}
 			if (e instanceof Expr.Lit l && l.value() instanceof Boolean b) {
 				return b ? new Formula.And(List.of()) : new Formula.Or(List.of());
+			}
+			if (e instanceof Expr.Var) {
+				return truth(e); // a boolean parameter as a condition
 			}
 			throw new PddlTranslationException(Exprs.show(e) + " is not a condition");
 		}
 
 		Formula equality(Expr l, Expr r) {
+			if (isCondition(l) || isCondition(r)) {
+				// 'p() == false', 'p() == q()': the same truth value
+				requirements.add(":negative-preconditions");
+				requirements.add(":disjunctive-preconditions");
+				Formula a = truth(l);
+				Formula b = truth(r);
+				return new Formula.Or(List.of(new Formula.And(List.of(a, b)), new Formula.And(List.of(new Formula.Not(a), new Formula.Not(b)))));
+			}
 			if (isFunction(l) && !isFunction(r)) {
 				return atom((Expr.Call) l, term(r));
 			}
@@ -255,6 +278,19 @@ public final class PddlTranslator {
 				args.add(value);
 			}
 			return new Formula.Atom(PddlNames.predicate(c.actor(), c.property()), args);
+		}
+
+		private boolean isCondition(Expr e) {
+			return e instanceof Expr.Call c && property(c).isBoolean();
+		}
+
+		/** A Boolean operand of '==' as a formula: a condition as it is, a Boolean value as equal to true. */
+		private Formula truth(Expr e) {
+			if (isCondition(e) || e instanceof Expr.Lit l && l.value() instanceof Boolean) {
+				return formula(e);
+			}
+			requirements.add(":equality");
+			return new Formula.Equals(term(e), term(new Expr.Lit(Boolean.TRUE)));
 		}
 
 		boolean isFunction(Expr e) {
@@ -281,8 +317,9 @@ public final class PddlTranslator {
 		private final List<Formula> readPre = new ArrayList<>();
 		private int fresh;
 
-		ActionTranslation(ActionSchema action, PddlNames names, Set<String> domainConstants, Set<String> requirements) {
-			super(names, requirements);
+		ActionTranslation(ActionSchema action, PddlNames names, Set<String> domainConstants, Set<String> requirements,
+				NumberOrder order) {
+			super(names, requirements, order);
 			this.action = action;
 			this.domainConstants = domainConstants;
 			for (Param p : action.params()) {
@@ -344,6 +381,11 @@ public final class PddlTranslator {
 		}
 
 		@Override
+		Formula ordering(Expr.Compare c) {
+			return order.atom(c.op(), term(c.left()), term(c.right()));
+		}
+
+		@Override
 		String term(Expr e) {
 			if (e instanceof Expr.Var v) {
 				String name = PddlNames.variable(v.name());
@@ -372,9 +414,114 @@ public final class PddlTranslator {
 	private final class GroundTranslation extends Formulas {
 		private final Map<String, Object> binding;
 
-		GroundTranslation(PddlNames names, Map<String, Object> binding, Set<String> requirements) {
-			super(names, requirements);
+		GroundTranslation(PddlNames names, Map<String, Object> binding, Set<String> requirements, NumberOrder order) {
+			super(names, requirements, order);
 			this.binding = binding;
+		}
+
+		/**
+		 * A goal has no parameters to name a property's current value, so a condition that reads a
+		 * non-Boolean property other than as {@code f(objects) == value} (an ordering, two properties
+		 * compared, a property as an argument) becomes a disjunction over the values the property can
+		 * have: every object or number of its type the translation names.
+		 */
+		@Override
+		Formula formula(Expr e) {
+			if (e instanceof Expr.Compare || e instanceof Expr.Call) {
+				Expr.Call read = readInside(e);
+				if (read != null) {
+					List<Formula> cases = new ArrayList<>();
+					for (Object value : candidates(property(read).type())) {
+						Formula rest = formula(replace(e, read, new Expr.Lit(value)));
+						cases.add(new Formula.And(List.of(atom(read, literal(value, null)), rest)));
+					}
+					requirements.add(":disjunctive-preconditions");
+					return cases.size() == 1 ? cases.get(0) : new Formula.Or(cases);
+				}
+			}
+			return super.formula(e);
+		}
+
+		/** The innermost property read that {@link Formulas#formula} cannot translate directly, or null. */
+		private Expr.Call readInside(Expr e) {
+			if (e instanceof Expr.Call c) {
+				return innermostIn(c.args());
+			}
+			Expr.Compare c = (Expr.Compare) e;
+			if (c.op() != Expr.Op.EQ && c.op() != Expr.Op.NE || isFunction(c.left()) && isFunction(c.right())) {
+				Expr.Call left = innermost(c.left());
+				return left != null ? left : innermost(c.right());
+			}
+			for (Expr side : List.of(c.left(), c.right())) {
+				if (side instanceof Expr.Call call) {
+					Expr.Call inner = innermostIn(call.args());
+					if (inner != null) {
+						return inner;
+					}
+				}
+			}
+			return null;
+		}
+
+		private Expr.Call innermostIn(List<Expr> args) {
+			for (Expr a : args) {
+				Expr.Call found = innermost(a);
+				if (found != null) {
+					return found;
+				}
+			}
+			return null;
+		}
+
+		private Expr.Call innermost(Expr e) {
+			if (!(e instanceof Expr.Call c)) {
+				return null;
+			}
+			Expr.Call inner = innermostIn(c.args());
+			return inner != null ? inner : isFunction(c) ? c : null;
+		}
+
+		private Expr replace(Expr e, Expr.Call read, Expr value) {
+			if (e.equals(read)) {
+				return value;
+			}
+			if (e instanceof Expr.Call c) {
+				return new Expr.Call(c.actor(), c.property(), c.args().stream().map(a -> replace(a, read, value)).toList());
+			}
+			if (e instanceof Expr.Compare c) {
+				return new Expr.Compare(c.op(), replace(c.left(), read, value), replace(c.right(), read, value));
+			}
+			return e;
+		}
+
+		/** The values a property of {@code type} can have: the objects and numbers of that type named so far. */
+		private List<Object> candidates(String type) {
+			boolean numeric = type.equals("int") || type.equals("double");
+			List<Object> values = new ArrayList<>();
+			for (Map.Entry<String, String> o : List.copyOf(names.objectsWithTypes().entrySet())) {
+				Object v = names.valueOf(o.getKey());
+				if (numeric ? v instanceof Number : schema.isSubtype(o.getValue(), type)) {
+					values.add(v);
+				}
+			}
+			return values;
+		}
+
+		/** Both sides are values here (property reads were expanded): the comparison is decided now. */
+		@Override
+		Formula ordering(Expr.Compare c) {
+			Object l = value(c.left());
+			Object r = value(c.right());
+			boolean holds = l instanceof Number a && r instanceof Number b && NumberOrder.holds(c.op(), a.doubleValue(), b.doubleValue());
+			return holds ? new Formula.And(List.of()) : new Formula.Or(List.of());
+		}
+
+		private Object value(Expr e) {
+			if (e instanceof Expr.Var v) {
+				Object bound = binding.get(v.name());
+				return bound != null ? org.triad.runtime.app.Values.canonical(bound) : names.valueOf(v.name());
+			}
+			return e instanceof Expr.Lit l ? l.value() : null;
 		}
 
 		@Override

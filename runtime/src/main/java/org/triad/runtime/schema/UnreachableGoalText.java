@@ -43,6 +43,9 @@ final class UnreachableGoalText {
 
 	/** {@code Actor.prop(args)} for a Boolean property, {@code Actor.prop(args) == value} otherwise. */
 	private String condition(Formula.Atom atom) {
+		if (atom.args().size() == 2 && (atom.predicate().equals(NumberOrder.LESS) || atom.predicate().equals(NumberOrder.AT_MOST))) {
+			return value(atom.args().get(0)) + (atom.predicate().equals(NumberOrder.LESS) ? " < " : " <= ") + value(atom.args().get(1));
+		}
 		PropertySchema p = property(atom.predicate());
 		if (p == null) {
 			return atom.toString();

@@ -1,0 +1,119 @@
+package org.triad.planner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+
+/**
+ * PDDL 2.1 numeric planning (level 2) by Triad's engine: a battery drained by road lengths and recharged
+ * at a dock, and counters moved until ordered; every plan replayed by {@link PlanValidator}.
+ */
+class NumericPlanningTest {
+    private static final Duration TIMEOUT = Duration.ofSeconds(60);
+
+    private static PddlPlan solve(Domain d, Problem p) {
+        SolveResult r = new TriadEngine().solve(d, p, TIMEOUT);
+        assertEquals(SolveResult.Status.SOLVED, r.status(), r.message());
+        PlanValidator.Report report = PlanValidator.validate(d, p, r.plan());
+        assertTrue(report.valid(), report.message() + "\n" + r.plan().toPddl());
+        return r.plan();
+    }
+
+    @Test
+    void theRobotRechargesWhenTheBatteryCannotReachTheGoal() {
+        Domain d = TestProblems.domain("numeric/battery-domain.pddl");
+        Problem p = TestProblems.problem("numeric/battery-problem.pddl");
+        PddlPlan plan = solve(d, p);
+        // 30 is too little for 60 of road plus the 10 to keep: to the dock and back first
+        assertEquals(List.of(PddlStep.of("drive", "r1", "lobby", "dock"), PddlStep.of("recharge", "r1", "dock"),
+                PddlStep.of("drive", "r1", "dock", "lobby"), PddlStep.of("drive", "r1", "lobby", "c1"), PddlStep.of("drive", "r1", "c1", "c2"),
+                PddlStep.of("drive", "r1", "c2", "ward")), plan.steps());
+    }
+
+    @Test
+    void aFullBatteryDrivesStraightThere() {
+        Domain d = TestProblems.domain("numeric/battery-domain.pddl");
+        Problem p = TestProblems.problem("numeric/battery-problem.pddl");
+        Problem full = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (battery r1) 30)", "(= (battery r1) 90)"),
+                "full.pddl");
+        assertEquals(3, solve(d, full).length());
+        assertEquals(6, solve(d, p).length());
+    }
+
+    @Test
+    void aCostThatDependsOnTheStateIsNotPartOfTheState() {
+        // as in IPC 2023 tpp: total-cost increased by an expression over fluents
+        Domain d = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl").replace("(travelled))", "(total-cost))")
+                .replace("(increase (travelled) (distance ?a ?b))", "(increase (total-cost) (* 2 (battery ?r)))"), "cost.pddl");
+        Problem p = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (travelled) 0)", "(= (total-cost) 0)")
+                .replace("minimize (travelled)", "minimize (total-cost)"), "cost.pddl");
+        assertEquals(6, solve(d, p).length());
+    }
+
+    @Test
+    void countersAreOrderedAndThePlanIsTheSameEveryTime() {
+        Domain d = TestProblems.domain("numeric/counters-domain.pddl");
+        Problem p = TestProblems.problem("numeric/counters-problem.pddl");
+        PddlPlan first = solve(d, p);
+        assertEquals(first, solve(d, p));
+        // c0 down to 2 and c2 up to 4 around c1 = 3 is the least: 8 moves
+        assertTrue(first.length() >= 8 && first.length() <= 12, first.toPddl());
+    }
+
+    @Test
+    void anUnreachableNumericGoalIsUnsolvableNotATimeout() {
+        Domain d = TestProblems.domain("numeric/counters-domain.pddl");
+        Problem p = PddlParser.parseProblem(TestProblems.text("numeric/counters-problem.pddl").replace("(= (max-int) 8)", "(= (max-int) 1)"),
+                "low.pddl");
+        SolveResult r = new TriadEngine().solve(d, p, TIMEOUT);
+        assertEquals(SolveResult.Status.UNSOLVABLE, r.status(), r.message());
+    }
+
+    @Test
+    void theValidatorRefusesAPlanThatRunsTheBatteryFlat() {
+        Domain d = TestProblems.domain("numeric/battery-domain.pddl");
+        Problem p = TestProblems.problem("numeric/battery-problem.pddl");
+        PddlPlan straight = new PddlPlan(List.of(PddlStep.of("drive", "r1", "lobby", "c1"), PddlStep.of("drive", "r1", "c1", "c2"),
+                PddlStep.of("drive", "r1", "c2", "ward")));
+        PlanValidator.Report report = PlanValidator.validate(d, p, straight);
+        assertFalse(report.valid());
+        assertEquals(1, report.failedStep());
+        assertEquals("step 2 (drive r1 c1 c2): precondition not satisfied: (>= (battery r1) (distance c1 c2)) is false (10 >= 20)",
+                report.message());
+    }
+
+    @Test
+    void badNumbersAreLocatedErrorsNotCrashes() {
+        Domain d = TestProblems.domain("numeric/battery-domain.pddl");
+        Problem undefined = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (distance c2 ward) 20)", ""),
+                "undefined.pddl");
+        // as in PDDL 2.1, a road without a length cannot be driven: the ward is out of reach
+        assertEquals(SolveResult.Status.UNSOLVABLE, new TriadEngine().solve(d, undefined, TIMEOUT).status());
+        Problem noCapacity = PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl").replace("(= (capacity r1) 100)", "")
+                .replace("(:goal (and", "(:goal (and (> (capacity r1) 0)"), "no-capacity.pddl");
+        SolveResult r = new TriadEngine().solve(d, noCapacity, TIMEOUT);
+        assertEquals(SolveResult.Status.ERROR, r.status());
+        assertEquals("the goal reads (capacity r1), which :init gives no value and no action sets", r.message());
+
+        Domain divides = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl")
+                .replace("(decrease (battery ?r) (distance ?a ?b))", "(decrease (battery ?r) (/ (distance ?a ?b) 0))"), "divides.pddl");
+        SolveResult z = new TriadEngine().solve(divides, TestProblems.problem("numeric/battery-problem.pddl"), TIMEOUT);
+        assertEquals(SolveResult.Status.ERROR, z.status());
+        assertTrue(z.message().endsWith("divides by zero: (/ (distance ?a ?b) 0)"), z.message());
+
+        // a division by a fluent that is zero when the step runs: the validator names the step
+        Domain byBattery = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl")
+                .replace("(increase (travelled) (distance ?a ?b))", "(increase (travelled) (/ 1 (- (battery ?r) 30)))"), "by-battery.pddl");
+        PlanValidator.Report report = PlanValidator.validate(byBattery, TestProblems.problem("numeric/battery-problem.pddl"),
+                new PddlPlan(List.of(PddlStep.of("drive", "r1", "lobby", "dock"))));
+        assertEquals("step 1 (drive r1 lobby dock): division by zero in (/ 1 (- (battery r1) 30))", report.message());
+    }
+}

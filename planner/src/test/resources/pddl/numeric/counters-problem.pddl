@@ -1,0 +1,5 @@
+(define (problem three)
+  (:domain counters)
+  (:objects c0 c1 c2 - counter)
+  (:init (= (max-int) 8) (= (value c0) 6) (= (value c1) 3) (= (value c2) 0))
+  (:goal (and (<= (+ (value c0) 1) (value c1)) (<= (+ (value c1) 1) (value c2)))))
