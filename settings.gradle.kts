@@ -23,5 +23,5 @@ rootProject.name = "triad"
 // stand in for the org.triad:triad-* dependencies of the projects below
 includeBuild("gradle-plugin")
 
-include("pddl4j", "building", "sim", "vda5050", "service", "cli", "editors", "tests", "fuzz")
+include("pddl4j", "archetype", "building", "sim", "vda5050", "service", "cli", "editors", "tests", "fuzz")
 include("models:logistics", "models:hospital")

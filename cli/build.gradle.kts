@@ -13,6 +13,7 @@ dependencies {
     api(project(":pddl4j"))
     api(project(":vda5050")) // ./triad run with VDA 5050 robots, ./triad broker
     api(project(":service")) // ./triad serve
+    api(project(":archetype")) // ./triad new
     api("info.picocli:picocli:4.7.6")
 }
 

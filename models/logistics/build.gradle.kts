@@ -9,6 +9,7 @@ val triadVersion: String by project
 dependencies {
     api("org.triad:triad-runtime:$triadVersion")
     api("org.triad:triad-refarc:$triadVersion")
+    testImplementation("org.triad:triad-generator:$triadVersion")
 }
 
 tasks.withType<JavaCompile>().configureEach {

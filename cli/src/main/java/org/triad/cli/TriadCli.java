@@ -9,7 +9,7 @@ import picocli.CommandLine.Command;
 @Command(name = "triad", mixinStandardHelpOptions = true, version = "Triad 0.1.0",
 		description = "Model-driven service robotics: check, generate and run applications modeled by domain, robotics and integration experts.",
 		subcommands = { DemoCommand.class, CheckCommand.class, GenerateCommand.class, RunCommand.class, ServeCommand.class, PddlCommand.class, SolveCommand.class, ArcCommand.class, LspCommand.class,
-				RobotCommand.class, BrokerCommand.class, UsersCommand.class,
+				RobotCommand.class, BrokerCommand.class, UsersCommand.class, NewCommand.class,
 				CommandLine.HelpCommand.class })
 public final class TriadCli implements Runnable {
 	@CommandLine.Spec

@@ -7,10 +7,12 @@ import java.util.Map;
 import org.triad.dsl.triad.AttributeAssignment;
 import org.triad.dsl.triad.BinaryExpression;
 import org.triad.dsl.triad.Expression;
+import org.triad.dsl.triad.NotExpression;
 import org.triad.dsl.triad.ObjectDeclaration;
 import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.triad.Situation;
 import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.semantics.SituationLineage;
 import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
 import org.triad.runtime.app.Atom;
@@ -25,30 +27,41 @@ public final class SituationReader {
 	private SituationReader() {
 	}
 
+	/**
+	 * The situation's objects and facts; for {@code state B extends A}, A's first, then B's, whose values replace
+	 * A's and whose {@code !A.p(x)} retract A's facts.
+	 */
 	public static State read(Situation situation, AppSchema schema) {
+		List<Situation> order = SituationLineage.applicationOrder(situation);
 		State.Builder b = State.builder();
-		for (ObjectDeclaration d : situation.getDeclarations()) {
-			for (SituationObject o : d.getObjects()) {
-				Map<String, Object> attributes = new LinkedHashMap<>();
-				for (AttributeAssignment a : o.getAssignments()) {
-					Object value = literal(SchemaBuilder.expr(a.getValue()));
-					attributes.put(a.getAttribute().getName(),
-							TriadTypeSystem.typeOf(a.getAttribute().getType()).kind() == TriadType.Kind.DOUBLE ? asDouble(value) : value);
+		for (Situation s : order) {
+			for (ObjectDeclaration d : s.getDeclarations()) {
+				for (SituationObject o : d.getObjects()) {
+					Map<String, Object> attributes = new LinkedHashMap<>();
+					for (AttributeAssignment a : o.getAssignments()) {
+						Object value = literal(SchemaBuilder.expr(a.getValue()));
+						attributes.put(a.getAttribute().getName(),
+								TriadTypeSystem.typeOf(a.getAttribute().getType()).kind() == TriadType.Kind.DOUBLE ? asDouble(value) : value);
+					}
+					b.object(new GenericObject(o.getName(), d.getType().getName(), attributes));
 				}
-				b.object(new GenericObject(o.getName(), d.getType().getName(), attributes));
 			}
 		}
 		State objects = b.build();
 		Evaluator evaluator = new Evaluator(schema);
-		for (Expression fact : situation.getFacts()) {
-			if (fact instanceof PropertyCall call) {
-				b.fact(evaluator.atom((Expr.Call) SchemaBuilder.expr(call), objects, Map.of()));
-			} else if (fact instanceof BinaryExpression eq && eq.getLeft() instanceof PropertyCall call) {
-				Expr.Call c = (Expr.Call) SchemaBuilder.expr(call);
-				Atom atom = evaluator.atom(c, objects, Map.of());
-				Object value = evaluator.eval(SchemaBuilder.expr(eq.getRight()), objects, Map.of());
-				boolean isDouble = schema.property(c.actor(), c.property()).map(p -> "double".equals(p.type())).orElse(false);
-				b.value(atom, isDouble ? asDouble(value) : value);
+		for (Situation s : order) {
+			for (Expression fact : s.getFacts()) {
+				if (fact instanceof PropertyCall call) {
+					b.fact(evaluator.atom((Expr.Call) SchemaBuilder.expr(call), objects, Map.of()));
+				} else if (fact instanceof NotExpression not && not.getOperand() instanceof PropertyCall call) {
+					b.retract(evaluator.atom((Expr.Call) SchemaBuilder.expr(call), objects, Map.of()));
+				} else if (fact instanceof BinaryExpression eq && eq.getLeft() instanceof PropertyCall call) {
+					Expr.Call c = (Expr.Call) SchemaBuilder.expr(call);
+					Atom atom = evaluator.atom(c, objects, Map.of());
+					Object value = evaluator.eval(SchemaBuilder.expr(eq.getRight()), objects, Map.of());
+					boolean isDouble = schema.property(c.actor(), c.property()).map(p -> "double".equals(p.type())).orElse(false);
+					b.value(atom, isDouble ? asDouble(value) : value);
+				}
 			}
 		}
 		return b.build();

@@ -48,7 +48,9 @@ public class ModelRenameService extends RenameService2 {
 	private static final TriadPackage P = TriadPackage.eINSTANCE;
 	private static final Set<String> KEYWORDS = Set.of("domain", "robot", "world", "property", "action", "pre", "post",
 			"goal", "task", "state", "classdiagram", "class", "abstract", "extends", "enum", "true", "false", "boolean", "int", "double",
-			"String", "component", "port", "in", "out", "automaton", "initial", "package", "import", "faults");
+			"String", "component", "port", "in", "out", "automaton", "initial", "package", "import", "faults",
+			// reserved in tasks and goals so that constructs they do not have get one finding (task.no-*, goal.no-quantifier)
+			"if", "else", "while", "forall", "exists", "priority", "before", "after");
 
 	@Inject
 	private ResourceDescriptionsProvider index;

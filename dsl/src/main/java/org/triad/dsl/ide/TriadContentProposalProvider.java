@@ -61,11 +61,16 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 		super._createProposals(crossReference, context, acceptor);
 	}
 
+	/** Rules that read constructs the languages do not have (to report them well): their keywords are never proposed. */
+	private static final java.util.Set<String> UNSUPPORTED_RULES = java.util.Set.of("UnsupportedStep", "StepBlock", "TaskSetting",
+			"TimeConstraint", "Setting", "Moment", "Quantifier");
+
 	@Override
 	protected void _createProposals(Keyword keyword, ContentAssistContext context, IIdeContentProposalAcceptor acceptor) {
 		// nothing to add after 'X.', nor a keyword that is already typed in full, nor an operator
 		// right after a name being typed (that name is not finished yet)
-		if (qualifierBeforeDot(context) == null && !keyword.getValue().equals(context.getPrefix()) && !continuesAName(context)) {
+		if (qualifierBeforeDot(context) == null && !keyword.getValue().equals(context.getPrefix()) && !continuesAName(context)
+				&& !UNSUPPORTED_RULES.contains(GrammarUtil.containingRule(keyword).getName())) {
 			super._createProposals(keyword, context, acceptor);
 		}
 	}

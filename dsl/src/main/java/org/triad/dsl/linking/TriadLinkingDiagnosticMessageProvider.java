@@ -58,6 +58,9 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 		if (target == P.getGoal()) {
 			return error(CommonIssueCodes.UNKNOWN_GOAL, "unknown goal '" + name + "'");
 		}
+		if (target == P.getSituation()) {
+			return error(CommonIssueCodes.UNKNOWN_SITUATION, "unknown situation '" + name + "' (no 'state " + name + "' in this application)");
+		}
 		if (target == P.getEnumeration()) {
 			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown enumeration '" + name + "'");
 		}

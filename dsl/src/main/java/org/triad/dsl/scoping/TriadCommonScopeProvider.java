@@ -16,7 +16,11 @@ import org.triad.dsl.triad.ObjectDeclaration;
 import org.triad.dsl.triad.Parameterized;
 import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.triad.Situation;
+import org.triad.dsl.triad.Goal;
+import org.triad.dsl.triad.Parameter;
+import org.triad.dsl.triad.UnsupportedConstruct;
 import org.triad.dsl.triad.SituationObject;
+import org.triad.dsl.semantics.SituationLineage;
 import org.triad.dsl.triad.TriadPackage;
 import org.triad.dsl.typing.TriadTypeSystem;
 
@@ -59,14 +63,32 @@ public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
 	private IScope valueScope(EObject context) {
 		Situation situation = EcoreUtil2.getContainerOfType(context, Situation.class);
 		if (situation != null) {
+			// a situation's own objects, then those it inherits (state B extends A), nearest first
 			List<SituationObject> objects = new ArrayList<>();
-			for (ObjectDeclaration d : situation.getDeclarations()) {
-				objects.addAll(d.getObjects());
+			for (Situation s : SituationLineage.lineage(situation)) {
+				for (ObjectDeclaration d : s.getDeclarations()) {
+					objects.addAll(d.getObjects());
+				}
 			}
 			return Scopes.scopeFor(objects);
 		}
 		Parameterized owner = EcoreUtil2.getContainerOfType(context, Parameterized.class);
-		return owner == null ? IScope.NULLSCOPE : Scopes.scopeFor(owner.getParameters());
+		// the variables of a 'forall (Room r)' the language does not have resolve, so that it is one finding, not many
+		List<Parameter> variables = new ArrayList<>();
+		for (EObject c = context; c != null && c != owner; c = c.eContainer()) {
+			if (c instanceof UnsupportedConstruct u) {
+				u.getParts().stream().filter(Parameter.class::isInstance).map(Parameter.class::cast).forEach(variables::add);
+			}
+		}
+		if (owner instanceof Goal goal) {
+			goal.getUnsupported().forEach(u -> u.getParts().stream().filter(Parameter.class::isInstance).map(Parameter.class::cast).forEach(variables::add));
+		}
+		if (owner == null) {
+			return IScope.NULLSCOPE;
+		}
+		List<Parameter> visible = new ArrayList<>(owner.getParameters());
+		visible.addAll(variables);
+		return Scopes.scopeFor(visible);
 	}
 
 	private IScope attributeScope(EObject context) {

@@ -21,6 +21,8 @@ public final class CommonIssueCodes {
 	public static final String UNKNOWN_LITERAL = "link.unknown-literal";
 	public static final String UNKNOWN_ATTRIBUTE = "link.unknown-attribute";
 	public static final String UNKNOWN_NAME = "link.unknown-name";
+	/** {@code state B extends A} where the application has no situation {@code A}. */
+	public static final String UNKNOWN_SITUATION = "link.unknown-situation";
 	/** A property call outside an actor that does not name the actor. */
 	public static final String UNQUALIFIED_CALL = "expr.unqualified-call";
 

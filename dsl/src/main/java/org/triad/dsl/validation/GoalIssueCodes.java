@@ -9,4 +9,7 @@ public final class GoalIssueCodes {
 	public static final String UNUSED_PARAMETER = "goal.unused-parameter";
 	/** A goal situation that refers to no actor property, so no action can ever change it (warning). */
 	public static final String NO_PROPERTY = "goal.no-property";
+
+	/** {@code forall (T x)} or {@code exists (T x)} in a goal: goals have no quantifiers. */
+	public static final String NO_QUANTIFIER = "goal.no-quantifier";
 }

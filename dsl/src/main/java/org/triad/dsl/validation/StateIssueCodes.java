@@ -19,4 +19,6 @@ public final class StateIssueCodes {
 	public static final String DUPLICATE_ATTRIBUTE = "state.duplicate-attribute";
 	/** An attribute value that is not a literal of the attribute's type. */
 	public static final String ATTRIBUTE_VALUE = "state.attribute-value";
+	/** A situation that extends itself, directly or through others ({@code state A extends B}, {@code state B extends A}). */
+	public static final String EXTENDS_CYCLE = "state.extends-cycle";
 }

@@ -2,6 +2,7 @@ package org.triad.dsl.validation;
 
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.validation.Check;
+import org.triad.dsl.triad.UnsupportedConstruct;
 import org.triad.dsl.triad.Goal;
 import org.triad.dsl.triad.Parameter;
 import org.triad.dsl.triad.PropertyCall;
@@ -31,6 +32,16 @@ public class TriadGoalValidator extends AbstractTriadGoalValidator {
 				warning("parameter '" + p.getName() + "' of goal '" + goal.getName() + "' is not used", p, P.getNamedElement_Name(),
 						GoalIssueCodes.UNUSED_PARAMETER);
 			}
+		}
+	}
+
+	/** {@code forall (T x)} before a goal's condition: one finding on the keyword, saying what to write instead. */
+	@Check
+	public void checkUnsupported(UnsupportedConstruct c) {
+		if ("forall".equals(c.getKeyword()) || "exists".equals(c.getKeyword())) {
+			error("goals have no '" + c.getKeyword() + "': a goal is a condition over named objects; write it for each object"
+					+ " (Building.itemAt(gauze, ward1) && Building.itemAt(mask, ward1)) or give the goal a parameter and reference it once per"
+					+ " object in a task", c, P.getUnsupportedConstruct_Keyword(), GoalIssueCodes.NO_QUANTIFIER);
 		}
 	}
 }

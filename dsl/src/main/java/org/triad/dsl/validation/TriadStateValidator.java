@@ -2,6 +2,7 @@ package org.triad.dsl.validation;
 
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
@@ -14,7 +15,9 @@ import org.triad.dsl.triad.BinaryOperator;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.ObjectDeclaration;
 import org.triad.dsl.triad.PropertyCall;
+import org.triad.dsl.triad.NotExpression;
 import org.triad.dsl.triad.Situation;
+import org.triad.dsl.semantics.SituationLineage;
 import org.triad.dsl.triad.SituationObject;
 import org.triad.dsl.triad.ValueRef;
 import org.triad.dsl.typing.TriadType;
@@ -31,9 +34,36 @@ public class TriadStateValidator extends AbstractTriadStateValidator {
 				if (o.getName() != null && !seen.add(o.getName())) {
 					error("duplicate object '" + o.getName() + "' in state '" + s.getName() + "'", o, P.getNamedElement_Name(),
 							StateIssueCodes.DUPLICATE_OBJECT);
+				} else if (o.getName() != null) {
+					inheritedFrom(s, o.getName()).ifPresent(owner -> error("object '" + o.getName() + "' is already declared in state '"
+							+ owner + "', which '" + s.getName() + "' extends; change its facts instead of declaring it again", o,
+							P.getNamedElement_Name(), StateIssueCodes.DUPLICATE_OBJECT));
 				}
 			}
 		}
+	}
+
+	@Check
+	public void checkParent(Situation s) {
+		if (s.getParent() != null && !s.getParent().eIsProxy() && SituationLineage.extendsItself(s)) {
+			error("state '" + s.getName() + "' extends itself through " + SituationLineage.lineage(s.getParent()).stream().map(Situation::getName).toList()
+					+ "; a situation extends one that does not extend it", s, P.getSituation_Parent(), StateIssueCodes.EXTENDS_CYCLE);
+		}
+	}
+
+	/** The ancestor situation that declares an object of this name, if any. */
+	private static java.util.Optional<String> inheritedFrom(Situation s, String name) {
+		List<Situation> lineage = SituationLineage.lineage(s);
+		for (Situation ancestor : lineage.subList(1, lineage.size())) {
+			for (ObjectDeclaration d : ancestor.getDeclarations()) {
+				for (SituationObject o : d.getObjects()) {
+					if (name.equals(o.getName())) {
+						return java.util.Optional.of(ancestor.getName());
+					}
+				}
+			}
+		}
+		return java.util.Optional.empty();
 	}
 
 	@Check
@@ -74,13 +104,16 @@ public class TriadStateValidator extends AbstractTriadStateValidator {
 			Expression value = null;
 			if (fact instanceof PropertyCall c && TriadTypeSystem.typeOf(c).isBoolean()) {
 				call = c;
+			} else if (fact instanceof NotExpression not && not.getOperand() instanceof PropertyCall c && TriadTypeSystem.typeOf(c).isBoolean()
+					&& s.getParent() != null) {
+				call = c; // retracts an inherited fact (state B extends A)
 			} else if (fact instanceof BinaryExpression b && b.getOperator() == BinaryOperator.EQ && b.getLeft() instanceof PropertyCall c
 					&& TriadTypeSystem.typeOf(c).kind() != TriadType.Kind.BOOLEAN) {
 				call = c;
 				value = b.getRight();
 			} else {
 				error("a fact is 'Actor.p(objects)' for a boolean property or 'Actor.f(objects) == value' for another property"
-						+ " (closed world: what is not stated does not hold)", s, P.getSituation_Facts(), i, StateIssueCodes.FACT_KIND);
+						+ " (closed world: what is not stated does not hold; '!Actor.p(objects)' retracts a fact in a state that extends another)", s, P.getSituation_Facts(), i, StateIssueCodes.FACT_KIND);
 				continue;
 			}
 			for (Expression arg : call.getArguments()) {

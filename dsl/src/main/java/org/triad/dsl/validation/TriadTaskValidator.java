@@ -10,6 +10,7 @@ import org.triad.dsl.triad.Goal;
 import org.triad.dsl.triad.GoalReference;
 import org.triad.dsl.triad.Parameter;
 import org.triad.dsl.triad.Task;
+import org.triad.dsl.triad.UnsupportedConstruct;
 import org.triad.dsl.triad.ValueRef;
 import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
@@ -48,7 +49,7 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 
 	@Check
 	public void checkTask(Task task) {
-		if (task.getSteps().isEmpty()) {
+		if (task.getSteps().isEmpty() && task.getUnsupported().isEmpty()) { // a task made of an 'if' has its own finding
 			warning("task '" + task.getName() + "' has no goals", task, P.getNamedElement_Name(), TaskIssueCodes.EMPTY);
 		}
 		for (Parameter p : task.getParameters()) {
@@ -60,6 +61,29 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 				warning("parameter '" + p.getName() + "' of task '" + task.getName() + "' is not used", p, P.getNamedElement_Name(),
 						TaskIssueCodes.UNUSED_PARAMETER);
 			}
+		}
+	}
+
+	/** One finding per construct tasks do not have, on its keyword, saying what to write instead. */
+	@Check
+	public void checkUnsupported(UnsupportedConstruct c) {
+		String keyword = c.getKeyword();
+		if (keyword == null) {
+			return;
+		}
+		switch (keyword) {
+		case "if", "while", "else" -> error("tasks have no '" + keyword + "' by design (a task is a fixed sequence of goals): write one task per case,"
+				+ " e.g. 'FetchAndDeliver' and 'Deliver', and let whoever submits the task choose; a goal that already holds is skipped,"
+				+ " so a step that may be done already needs no condition", c, P.getUnsupportedConstruct_Keyword(), TaskIssueCodes.NO_CONDITION);
+		case "forall" -> error("tasks have no 'forall': list the goals one by one (IsAt(ward1); IsAt(ward2);), or give the task one parameter"
+				+ " per object", c, P.getUnsupportedConstruct_Keyword(), TaskIssueCodes.NO_LOOP);
+		case "priority" -> error("a task has no priority in its model: the priority is given when the task is submitted (the service's task API),"
+				+ " so one task serves urgent and routine requests", c, P.getUnsupportedConstruct_Keyword(), TaskIssueCodes.NO_PRIORITY);
+		case "before", "after" -> error("tasks and goals have no time ('" + keyword + " " + c.getValue() + "'): when a task runs is decided when it is"
+				+ " submitted (submit it at the right time); a deadline is not planned for", c, P.getUnsupportedConstruct_Keyword(), TaskIssueCodes.NO_TIME);
+		default -> {
+			// quantifiers belong to goals; TriadGoalValidator reports them
+		}
 		}
 	}
 }

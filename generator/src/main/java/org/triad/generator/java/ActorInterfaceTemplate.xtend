@@ -37,7 +37,7 @@ class ActorInterfaceTemplate {
 				«members(world, im)»
 				«FOR c : classes»
 
-					«objectsMethod(c, im)»
+					«objectsMethod(c, classes, im)»
 				«ENDFOR»
 			}
 		'''
@@ -54,12 +54,14 @@ class ActorInterfaceTemplate {
 
 	private def String members(Actor actor, Imports im) '''
 		«FOR a : actor.actions SEPARATOR '\n'»
+			«ModelJavadoc.action(actor, a)»
 			«action(a, im)»
 		«ENDFOR»
 		«IF !actor.actions.empty && !actor.properties.empty»
 
 		«ENDIF»
 		«FOR p : actor.properties SEPARATOR '\n'»
+			«ModelJavadoc.property(actor, p, names.worldInterface)»
 			«property(p, im)»
 		«ENDFOR»
 	'''
@@ -75,7 +77,8 @@ class ActorInterfaceTemplate {
 	'''
 
 	/** The objects of a class that exist now (objects of its subclasses may be included; each is counted once). */
-	def String objectsMethod(DomainClass c, Imports im) '''
+	def String objectsMethod(DomainClass c, List<DomainClass> classes, Imports im) '''
+		«ModelJavadoc.objects(c, classes, [d | names.objectsMethod(d)])»
 		«im.ref("java.util.List")»<«im.ref(names.qualifiedDomainClass(c))»> «names.objectsMethod(c)»();
 	'''
 

@@ -57,6 +57,7 @@ class DomainTypeTemplate {
 	'''
 
 	private def String attributeAccessors(Attribute a, Imports im) '''
+		«ModelJavadoc.attribute(a.eContainer as DomainClass, a)»
 		public «im.ref(names.javaType(a.type))» «names.getter(a)»() {
 			return this.«names.field(a)»;
 		}

@@ -8,6 +8,7 @@ import org.triad.runtime.schema.Expr
 import org.triad.runtime.schema.GoalSchema
 import org.triad.runtime.schema.Param
 import org.triad.runtime.schema.PropertySchema
+import org.triad.runtime.schema.TaskSchema
 import org.triad.runtime.schema.TypeSchema
 
 /**
@@ -38,7 +39,7 @@ class SchemaTemplate {
 		val appSchema = im.ref("org.triad.runtime.schema.AppSchema")
 		val builder = appSchema + ".Builder"
 		'''
-			/** What the runtime knows of application {@code «s.name»}: types, actor properties and actions, goals. Generated: do not edit. */
+			/** What the runtime knows of application {@code «s.name»}: types, actor properties and actions, goals, tasks. Generated: do not edit. */
 			public final class «names.schemaClass» {
 				public static final «appSchema» «names.schemaField» = «names.schemaBuildMethod»();
 
@@ -51,6 +52,7 @@ class SchemaTemplate {
 					«names.schemaPartMethod("properties")»(«names.schemaBuilderVariable»);
 					«names.schemaPartMethod("actions")»(«names.schemaBuilderVariable»);
 					«names.schemaPartMethod("goals")»(«names.schemaBuilderVariable»);
+					«names.schemaPartMethod("tasks")»(«names.schemaBuilderVariable»);
 					return «names.schemaBuilderVariable».build();
 				}
 
@@ -77,6 +79,12 @@ class SchemaTemplate {
 						«names.schemaBuilderVariable».goal(«goal(g, im)»);
 					«ENDFOR»
 				}
+
+				private static void «names.schemaPartMethod("tasks")»(«builder» «names.schemaBuilderVariable») {
+					«FOR t : s.tasks.values»
+						«names.schemaBuilderVariable».task(«task(t, im)»);
+					«ENDFOR»
+				}
 			}
 		'''
 	}
@@ -98,6 +106,11 @@ class SchemaTemplate {
 	def String effect(Effect e, Imports im) '''new «im.ref("org.triad.runtime.schema.Effect")»(«expr(e.call, im)», «e.holds», «IF e.value === null»null«ELSE»«expr(e.value, im)»«ENDIF»)'''
 
 	def String goal(GoalSchema g, Imports im) '''new «im.ref("org.triad.runtime.schema.GoalSchema")»(«JavaLiterals.string(g.name)», «params(g.params, im)», «expr(g.condition, im)»)'''
+
+	/** A task by name, for running it by name ({@code TaskRunner.run("Fetch", ...)}). */
+	def String task(TaskSchema t, Imports im) '''new «im.ref("org.triad.runtime.schema.TaskSchema")»(«JavaLiterals.string(t.name)», «params(t.params, im)», «im.ref("java.util.List")».of(«t.steps.map[step(im)].join(', ')»))'''
+
+	def String step(TaskSchema.Step st, Imports im) '''new «im.ref("org.triad.runtime.schema.TaskSchema")».Step(«JavaLiterals.string(st.goal)», «im.ref("java.util.List")».of(«st.args.map[expr(im)].join(', ')»))'''
 
 	def String params(List<Param> ps, Imports im) '''«im.ref("java.util.List")».of(«ps.map['''new «im.ref("org.triad.runtime.schema.Param")»(«JavaLiterals.string(name)», «JavaLiterals.string(type)»)'''].join(', ')»)'''
 

@@ -81,6 +81,7 @@ public final class TriadJavaGenerator {
 		List<Actor> bothActors = List.of(app.getRobot(), app.getWorld());
 		files.add(new GeneratedFile(names.qualifiedStateProviderClass(), behaviours.stateProvider(bothActors, concreteClasses)));
 		files.add(new GeneratedFile(names.qualifiedActionExecutorClass(), behaviours.actionExecutor(bothActors)));
+		files.add(new GeneratedFile(names.qualifiedRefArcClass(), new RefArcTemplate(names).refArcClass()));
 		return files;
 	}
 

@@ -143,6 +143,15 @@ public final class TriadNames {
 		return qualified(basePackage, actionExecutorClass());
 	}
 
+	/** The entry point that builds the application's RefArc around its robot and world ({@code HospitalRefArc.of(robot, world)}). */
+	public String refArcClass() {
+		return applicationPrefix() + "RefArc";
+	}
+
+	public String qualifiedRefArcClass() {
+		return qualified(basePackage, refArcClass());
+	}
+
 	/** The simple names of the classes generated into a package, which shadow imported names there. */
 	public Set<String> classesIn(String pkg) {
 		Set<String> names = new HashSet<>();
@@ -153,7 +162,7 @@ public final class TriadNames {
 		} else if (pkg.equals(tasksPackage())) {
 			app.getTasks().forEach(t -> names.add(taskClass(t)));
 		} else if (pkg.equals(basePackage)) {
-			names.addAll(List.of(robotInterface(), worldInterface(), schemaClass(), stateProviderClass(), actionExecutorClass()));
+			names.addAll(List.of(robotInterface(), worldInterface(), schemaClass(), stateProviderClass(), actionExecutorClass(), refArcClass()));
 		}
 		return names;
 	}

@@ -48,7 +48,7 @@ class JavaGeneratorTest {
 		hospital.assertCompiledCleanly();
 	}
 
-	/** The one expected-text test: the paper's Fig. 4 for Listing 1. */
+	/** The one expected-text test: the paper's Fig. 4 for Listing 1, with the javadoc written from the model. */
 	@Test
 	void robotInterfaceOfListing1IsThePapers() throws Exception {
 		assertEquals("""
@@ -58,8 +58,19 @@ class JavaGeneratorTest {
 
 				/** The robot {@code LogisticsRobot}: implement it for a platform. Generated: do not edit. */
 				public interface IRobot {
+					/**
+					 * Action {@code move(src, dst)} of robot {@code LogisticsRobot}: carry it out on the platform and return when it has ended.
+					 * RefArc calls it only when its precondition holds: {@code loc() == src && RoomsWorld.adj(src, dst)}.
+					 * Return {@code true} when it succeeded, so that afterwards {@code loc() == dst} holds as the properties report it;
+					 * {@code false} when it failed (RefArc then observes the state again and re-plans). Do not throw for a failure.
+					 */
 					boolean move(WayPoint src, WayPoint dst);
 
+					/**
+					 * The current value of {@code loc()} (property of robot {@code LogisticsRobot}, of type {@code WayPoint}), as observed on the platform;
+					 * an object must be one that {@code IWorld} lists; {@code null} when it has no value.
+					 * Called whenever RefArc observes the state: answer quickly and without side effects.
+					 */
 					WayPoint loc();
 				}
 				""", logistics.source("IRobot"));
@@ -77,6 +88,7 @@ class JavaGeneratorTest {
 			assertEquals(expected.properties(), generated.properties());
 			assertEquals(expected.actions(), generated.actions());
 			assertEquals(expected.goals(), generated.goals());
+			assertEquals(expected.tasks(), generated.tasks());
 		}
 	}
 

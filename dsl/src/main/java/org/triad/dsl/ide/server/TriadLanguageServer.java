@@ -11,7 +11,13 @@ import org.eclipse.lsp4j.DefinitionParams;
 import org.eclipse.lsp4j.DidChangeWatchedFilesRegistrationOptions;
 import org.eclipse.lsp4j.FileSystemWatcher;
 import org.eclipse.lsp4j.ImplementationParams;
+import org.eclipse.lsp4j.Diagnostic;
+import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.eclipse.lsp4j.InitializeParams;
+import org.eclipse.lsp4j.InitializeResult;
+import org.eclipse.lsp4j.services.LanguageClient;
+import org.eclipse.xtext.resource.IResourceDescription;
+import org.eclipse.xtext.validation.Issue;
 import org.eclipse.lsp4j.InitializedParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.LocationLink;
@@ -46,6 +52,7 @@ public class TriadLanguageServer extends org.eclipse.xtext.ide.server.LanguageSe
 	public static final String WATCHER_REGISTRATION = "triad-model-files";
 
 	private volatile ClientCapabilities clientCapabilities;
+	private volatile BuildProgress progress;
 
 	@Override
 	protected ServerCapabilities createServerCapabilities(InitializeParams params) {
@@ -57,9 +64,57 @@ public class TriadLanguageServer extends org.eclipse.xtext.ide.server.LanguageSe
 		return capabilities;
 	}
 
+	/**
+	 * Xtext checks the whole workspace while it answers {@code initialize}; {@link BuildProgress} tells the
+	 * editor what it is doing meanwhile and how it ended, so that a large workspace is never a silent wait.
+	 */
+	@Override
+	public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
+		LanguageClient client = getLanguageClient();
+		if (client == null || params == null) {
+			return super.initialize(params);
+		}
+		BuildProgress p = new BuildProgress(client, params.getWorkDoneToken());
+		progress = p;
+		p.begin(workspaceName(params));
+		return super.initialize(params).whenComplete((result, failure) -> p.end());
+	}
+
+	@Override
+	public void afterBuild(List<IResourceDescription.Delta> deltas) {
+		super.afterBuild(deltas);
+		BuildProgress p = progress;
+		if (p != null) {
+			p.built(deltas.size());
+		}
+	}
+
+	/** Counts the errors of the first check's diagnostics, which Xtext publishes once the client is initialized. */
+	@Override
+	protected List<Diagnostic> toDiagnostics(Iterable<? extends Issue> issues) {
+		List<Diagnostic> diagnostics = super.toDiagnostics(issues);
+		BuildProgress p = progress;
+		if (p != null) {
+			p.published((int) diagnostics.stream().filter(d -> d.getSeverity() == DiagnosticSeverity.Error).count());
+		}
+		return diagnostics;
+	}
+
+	private static String workspaceName(InitializeParams params) {
+		if (params.getWorkspaceFolders() != null && !params.getWorkspaceFolders().isEmpty()) {
+			return params.getWorkspaceFolders().get(0).getUri();
+		}
+		return params.getRootUri() != null ? params.getRootUri() : "the workspace";
+	}
+
 	@Override
 	public void initialized(InitializedParams params) {
-		super.initialized(params);
+		super.initialized(params); // publishes the first check's diagnostics, in this thread
+		BuildProgress p = progress;
+		progress = null;
+		if (p != null) {
+			p.summarize();
+		}
 		if (supportsWatcherRegistration()) {
 			String glob = "**/*.{" + String.join(",", TriadLanguages.EXTENSIONS) + "}";
 			DidChangeWatchedFilesRegistrationOptions options = new DidChangeWatchedFilesRegistrationOptions(
