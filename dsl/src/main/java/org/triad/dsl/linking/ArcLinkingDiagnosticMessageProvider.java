@@ -47,7 +47,7 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 			return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of component '"
 					+ (owner == null ? "?" : owner.getName()) + "' as trigger");
 		}
-		if (ref == A.getNameRef_Target() && ArcModels.isTypeQualifier(context.getContext())) {
+		if (ref == A.getNameRef_Target() && ArcModels.isQualifierPosition(context.getContext())) {
 			return null; // Type.MEMBER: a Java or class-diagram type, checked by the validator (arc.unknown-name)
 		}
 		if (ref == A.getNameRef_Target() || ref == A.getAssignment_Target()) {

@@ -138,8 +138,12 @@ public final class ArcModels {
 	 * variable, parameter or port: a Java or class-diagram type then.
 	 */
 	public static boolean isTypeQualifier(EObject e) {
-		return e instanceof org.triad.dsl.arc.NameRef r && r.eContainer() instanceof org.triad.dsl.arc.MemberAccess m && m.getReceiver() == r
-				&& (r.getTarget() == null || r.getTarget().eIsProxy());
+		return isQualifierPosition(e) && (((org.triad.dsl.arc.NameRef) e).getTarget() == null || ((org.triad.dsl.arc.NameRef) e).getTarget().eIsProxy());
+	}
+
+	/** Whether the element is a name in front of {@code .member} (without resolving it: linking asks this while resolving). */
+	public static boolean isQualifierPosition(EObject e) {
+		return e instanceof org.triad.dsl.arc.NameRef r && r.eContainer() instanceof org.triad.dsl.arc.MemberAccess m && m.getReceiver() == r;
 	}
 
 	/** The text of a type qualifier as written. */
