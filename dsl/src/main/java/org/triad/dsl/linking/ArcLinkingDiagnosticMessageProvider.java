@@ -20,7 +20,7 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
 		EReference ref = context.getReference();
 		String name = context.getLinkText();
-		if (ref == A.getSubcomponentDeclaration_Type()) {
+		if (ref == A.getSubcomponentDeclaration_Type() || ref == A.getComponentType_Parent()) {
 			return error(ArcIssueCodes.UNKNOWN_COMPONENT, "unknown component type '" + name
 					+ "' (not in this package, not imported, no component of that qualified name)");
 		}

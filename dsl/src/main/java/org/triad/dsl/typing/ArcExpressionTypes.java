@@ -108,6 +108,13 @@ public final class ArcExpressionTypes {
 		if (e instanceof BinaryExpression b) {
 			return binary(b, problems);
 		}
+		if (e instanceof org.triad.dsl.arc.ConditionalExpression c) {
+			String condition = check(c.getCondition(), problems);
+			expect(Kind.BOOLEAN, condition, "condition of '?:'", c, problems);
+			String then = check(c.getThen(), problems);
+			String otherwise = check(c.getOtherwise(), problems);
+			return then.equals(otherwise) ? then : UNKNOWN;
+		}
 		return UNKNOWN;
 	}
 
@@ -127,7 +134,17 @@ public final class ArcExpressionTypes {
 			}
 			return "boolean";
 		}
-		case "<", "<=", ">", ">=" -> {
+		case "&", "|", "^" -> {
+			if (kind(l) == Kind.BOOLEAN && kind(r) == Kind.BOOLEAN) {
+				return "boolean";
+			}
+		}
+		case "<<", ">>", ">>>" -> {
+			expect(Kind.NUMERIC, l, "left operand of '" + op + "'", b, problems);
+			expect(Kind.NUMERIC, r, "right operand of '" + op + "'", b, problems);
+			return kind(l) == Kind.NUMERIC ? promote(l, "int") : UNKNOWN;
+		}
+				case "<", "<=", ">", ">=" -> {
 			expect(Kind.NUMERIC, l, "left operand of '" + op + "'", b, problems);
 			expect(Kind.NUMERIC, r, "right operand of '" + op + "'", b, problems);
 			return "boolean";

@@ -134,6 +134,9 @@ public class JavaExpressions {
 		if (e instanceof UnaryExpression u) {
 			return u.getOp() + "(" + expression(u.getOperand()) + ")";
 		}
+		if (e instanceof org.triad.dsl.arc.ConditionalExpression c) {
+			return "(" + expression(c.getCondition()) + " ? " + expression(c.getThen()) + " : " + expression(c.getOtherwise()) + ")";
+		}
 		BinaryExpression b = (BinaryExpression) e;
 		String l = expression(b.getLeft());
 		String r = expression(b.getRight());
