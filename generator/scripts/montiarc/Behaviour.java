@@ -17,6 +17,10 @@ import org.triad.runtime.component.TimeSlices;
  */
 public final class Behaviour {
     public static void main(String[] args) throws Exception {
+        if (args.length > 0 && args[0].equals("elevator")) {
+            elevator();
+            return;
+        }
         int passed = 0;
         int tried = 0;
         List<String> lines = new ArrayList<>();
@@ -95,6 +99,68 @@ public final class Behaviour {
             }
         }
         return "PASS";
+    }
+
+    /**
+     * The elevator's FloorControl and Splitter as MontiArc's FloorControlTest and SplitterTest expect:
+     * per state and inputs the next state and outputs; the splitter's o_k is true exactly for i == k.
+     */
+    @SuppressWarnings("unchecked")
+    private static void elevator() throws Exception {
+        int passed = 0;
+        int tried = 0;
+        // source state, btn, clear -> target state, light, req
+        Object[][] rows = { { "LightOff", false, false, "LightOff", false, false }, { "LightOff", true, false, "LightOn", true, true },
+                { "LightOff", false, true, "LightOff", false, false }, { "LightOff", true, true, "LightOff", false, false },
+                { "LightOn", false, false, "LightOn", true, true }, { "LightOn", true, false, "LightOn", true, true },
+                { "LightOn", false, true, "LightOff", false, false }, { "LightOn", true, true, "LightOff", false, false } };
+        Class<?> floorControl = Class.forName("elevator.FloorControl");
+        for (Object[] row : rows) {
+            tried++;
+            Component floor = (Component) floorControl.getConstructor().newInstance();
+            List<Boolean> light = new ArrayList<>();
+            List<Boolean> req = new ArrayList<>();
+            ((OutPort<Boolean>) port(floor, "light")).observe(light::add);
+            ((OutPort<Boolean>) port(floor, "req")).observe(req::add);
+            TimeSlices clock = TimeSlices.deploy(floor);
+            if (row[0].equals("LightOn")) {
+                clock.send((InPort<Boolean>) port(floor, "btn"), true);
+                clock.send((InPort<Boolean>) port(floor, "clear"), false);
+                clock.tick();
+                light.clear();
+                req.clear();
+            }
+            clock.send((InPort<Boolean>) port(floor, "btn"), (Boolean) row[1]);
+            clock.send((InPort<Boolean>) port(floor, "clear"), (Boolean) row[2]);
+            clock.tick();
+            String state = String.valueOf(floorControl.getMethod("currentState").invoke(floor));
+            boolean ok = state.equals(row[3]) && light.equals(List.of(row[4])) && req.equals(List.of(row[5]));
+            System.out.println("elevator.FloorControl " + java.util.Arrays.toString(row) + ": " + (ok ? "PASS" : "FAIL " + state + " " + light + " " + req));
+            passed += ok ? 1 : 0;
+        }
+        Class<?> splitter = Class.forName("elevator.Splitter");
+        for (Integer i : new Integer[] { null, -1, 0, 1, 2, 3, 4, 5 }) {
+            tried++;
+            Component s = (Component) splitter.getConstructor().newInstance();
+            List<String> out = new ArrayList<>();
+            for (int k = 1; k <= 4; k++) {
+                String name = "o" + k;
+                ((OutPort<Boolean>) port(s, name)).observe(m -> out.add(name + "=" + m));
+            }
+            TimeSlices clock = TimeSlices.deploy(s);
+            if (i != null) {
+                clock.send((InPort<Integer>) port(s, "i"), i);
+            }
+            clock.tick();
+            List<String> expected = new ArrayList<>();
+            for (int k = 1; k <= 4; k++) {
+                expected.add("o" + k + "=" + (i != null && i == k));
+            }
+            boolean ok = out.equals(expected);
+            System.out.println("elevator.Splitter i=" + i + ": " + (ok ? "PASS" : "FAIL " + out));
+            passed += ok ? 1 : 0;
+        }
+        System.out.println("behave " + passed + "/" + tried);
     }
 
     private static Object port(Component c, String name) throws Exception {

@@ -48,8 +48,9 @@ for set in applications/bumperbot applications/elevator applications/factory app
     if javac -nowarn -d "$dir/classes" -cp "$runtime" $(find "$dir/out" -name '*.java') >"$dir/javac.log" 2>&1; then
       compiled=$generated
       if [ "$(basename "$set")" = montiarc-base ]; then
-        behave=$(java -cp "$runtime:$dir/classes" "$here/generator/scripts/montiarc/Behaviour.java" | tail -1 | sed 's/behave //')
-        behave="$behave gates"
+        behave="$(java -cp "$runtime:$dir/classes" "$here/generator/scripts/montiarc/Behaviour.java" | tail -1 | sed 's/behave //') gates"
+      elif [ "$(basename "$set")" = elevator ]; then
+        behave="$(java -cp "$runtime:$dir/classes" "$here/generator/scripts/montiarc/Behaviour.java" elevator | tail -1 | sed 's/behave //') FloorControl/Splitter rows"
       fi
     else
       head -5 "$dir/javac.log" >&2

@@ -20,6 +20,11 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
 		EReference ref = context.getReference();
 		String name = context.getLinkText();
+		if (ref == A.getSubcomponentDeclaration_Type() && context.getContext() instanceof org.triad.dsl.arc.SubcomponentDeclaration d
+				&& org.eclipse.xtext.nodemodel.util.NodeModelUtils.getNode(d) != null
+				&& (d.getInstances().isEmpty() || d.getInstances().stream().anyMatch(i -> i.getName() == null))) {
+			return null; // a statement the parser could not read (reported as syntax) taken for a declaration in recovery
+		}
 		if (ref == A.getSubcomponentDeclaration_Type() || ref == A.getComponentType_Parent()) {
 			return error(ArcIssueCodes.UNKNOWN_COMPONENT, "unknown component type '" + name
 					+ "' (not in this package, not imported, no component of that qualified name)");

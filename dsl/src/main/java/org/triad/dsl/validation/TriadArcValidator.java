@@ -572,7 +572,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		Set<Subcomponent> reported = new HashSet<>();
 		for (Subcomponent start : subs) {
 			List<Subcomponent> loop = loopFrom(start, next);
-			if (loop != null && reported.add(start) && java.util.Collections.disjoint(loop.subList(1, loop.size()), reported)) {
+			if (loop != null && !reported.contains(start)) {
 				reported.addAll(loop);
 				error("feedback loop without a delayed port: " + String.join(" -> ", loop.stream().map(Subcomponent::getName).toList())
 						+ "; within one time slice each would wait for the other (make an outgoing port on the loop <<delayed>>, or put a Delay in it)",
