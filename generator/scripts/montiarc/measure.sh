@@ -10,7 +10,8 @@ here=$(cd "$(dirname "$0")/../../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-(cd "$here" && mvn -B -q -o -pl generator -am compile dependency:build-classpath -Dmdep.outputFile=target/cp.txt >/dev/null)
+# MEASURE_NO_BUILD=1 uses the classes of the last build
+[ "${MEASURE_NO_BUILD:-}" = 1 ] || (cd "$here" && mvn -B -q -o -pl generator -am compile dependency:build-classpath -Dmdep.outputFile=target/cp.txt >/dev/null)
 cp="$here/generator/target/classes:$here/dsl/target/classes:$here/runtime/target/classes:$here/planner/target/classes:$(cat "$here/generator/target/cp.txt")"
 runtime="$here/runtime/target/classes"
 

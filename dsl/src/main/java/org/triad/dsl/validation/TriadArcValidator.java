@@ -550,10 +550,14 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		return false;
 	}
 
-	/** Subcomponents that send to each other in a loop need a delayed port on it (MontiArc's strong causality). */
+	/**
+	 * Subcomponents that run in time slices and send to each other in a loop need a delayed port on it
+	 * (MontiArc's strong causality). Event-driven components (RefArc's) handle messages as they come and
+	 * may form loops.
+	 */
 	@Check
 	public void checkFeedbackLoops(ComponentType c) {
-		List<Subcomponent> subs = ArcModels.subcomponents(c);
+		List<Subcomponent> subs = ArcModels.subcomponents(c).stream().filter(s -> ArcModels.isTimed(ArcModels.type(s))).toList();
 		Map<Subcomponent, Set<Subcomponent>> next = new HashMap<>();
 		for (Connector con : c.getConnectors()) {
 			PortRef src = con.getSource();
@@ -564,7 +568,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 				continue;
 			}
 			for (PortRef t : con.getTargets()) {
-				if (t.getSubcomponent() != null && !t.getSubcomponent().eIsProxy()) {
+				if (t.getSubcomponent() != null && !t.getSubcomponent().eIsProxy() && subs.contains(t.getSubcomponent())) {
 					next.computeIfAbsent(src.getSubcomponent(), k -> new java.util.LinkedHashSet<>()).add(t.getSubcomponent());
 				}
 			}
