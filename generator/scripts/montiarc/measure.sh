@@ -3,7 +3,7 @@
 # compiles and runs (generator/README.md, "MontiArc 7's own models"). MontiArc's files are read from a
 # clone or mirror of github.com/MontiCore/montiarc given as $1 and copied to a temporary folder only.
 #   generator/scripts/montiarc/measure.sh /path/to/montiarc [commit]
-set -euo pipefail
+set -eu
 repo=${1:?usage: measure.sh MONTIARC_GIT_DIR_OR_CLONE [COMMIT]}
 commit=${2:-HEAD}
 here=$(cd "$(dirname "$0")/../../.." && pwd)
