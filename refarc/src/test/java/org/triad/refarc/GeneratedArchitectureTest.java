@@ -136,7 +136,7 @@ class GeneratedArchitectureTest {
     }
 
     private static TreeSet<String> modelSubcomponents(ComponentType c) {
-        return c.getSubcomponents().stream().map(s -> s.getType().getName() + " " + s.getName())
+        return org.triad.dsl.semantics.ArcModels.subcomponents(c).stream().map(s -> org.triad.dsl.semantics.ArcModels.type(s).getName() + " " + s.getName())
                 .collect(Collectors.toCollection(TreeSet::new));
     }
 

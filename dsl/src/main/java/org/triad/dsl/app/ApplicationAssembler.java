@@ -162,6 +162,8 @@ public final class ApplicationAssembler {
 					parts.add(cd);
 				} else if (root instanceof ActorModel m && m.getActor() != null) {
 					parts.add(m.getActor());
+				} else if (root instanceof org.triad.dsl.arc.ArcModel m && m.getComponent() != null) {
+					parts.add(m.getComponent());
 				}
 			}
 		}

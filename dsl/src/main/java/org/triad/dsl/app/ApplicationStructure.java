@@ -36,12 +36,19 @@ public record ApplicationStructure(List<ClassDiagram> classDiagrams, List<Actor>
 		List<ClassDiagram> cds = new ArrayList<>();
 		List<Actor> robots = new ArrayList<>();
 		List<Actor> worlds = new ArrayList<>();
+		boolean architecture = false;
 		for (EObject e : elements) {
-			if (e instanceof ClassDiagram cd) {
+			if (e instanceof org.triad.dsl.arc.ComponentType) {
+				architecture = true;
+			} else if (e instanceof ClassDiagram cd) {
 				cds.add(cd);
 			} else if (e instanceof Actor a) {
 				(a.getKind() == ActorKind.ROBOT ? robots : worlds).add(a);
 			}
+		}
+		if (architecture && robots.isEmpty() && worlds.isEmpty()) {
+			// class diagrams beside components and no actor: the data types of an architecture (MontiArc's .cd), not an application
+			return new ApplicationStructure(List.of(), List.of(), List.of());
 		}
 		cds.sort(STABLE);
 		robots.sort(STABLE);

@@ -1,5 +1,6 @@
 package org.triad.dsl.linking;
 
+import org.triad.dsl.semantics.ArcModels;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.diagnostics.DiagnosticMessage;
@@ -19,18 +20,23 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
 		EReference ref = context.getReference();
 		String name = context.getLinkText();
-		if (ref == A.getSubcomponent_Type()) {
+		if (ref == A.getSubcomponentDeclaration_Type() && context.getContext() instanceof org.triad.dsl.arc.SubcomponentDeclaration d
+				&& org.eclipse.xtext.nodemodel.util.NodeModelUtils.getNode(d) != null
+				&& (d.getInstances().isEmpty() || d.getInstances().stream().anyMatch(i -> i.getName() == null))) {
+			return null; // a statement the parser could not read (reported as syntax) taken for a declaration in recovery
+		}
+		if (ref == A.getSubcomponentDeclaration_Type() || ref == A.getComponentType_Parent()) {
 			return error(ArcIssueCodes.UNKNOWN_COMPONENT, "unknown component type '" + name
 					+ "' (not in this package, not imported, no component of that qualified name)");
 		}
 		if (ref == A.getPortRef_Port() && context.getContext() instanceof PortRef portRef) {
 			Subcomponent sub = portRef.getSubcomponent();
 			if (sub != null) {
-				if (sub.eIsProxy() || sub.getType() == null || sub.getType().eIsProxy()) {
+				if (sub.eIsProxy() || ArcModels.type(sub) == null || ArcModels.type(sub).eIsProxy()) {
 					return null; // the unknown subcomponent or type is reported; its ports cannot be known
 				}
 				return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of subcomponent '" + sub.getName()
-						+ "' (component '" + sub.getType().getName() + "')");
+						+ "' (component '" + ArcModels.type(sub).getName() + "')");
 			}
 			ComponentType owner = EcoreUtil2.getContainerOfType(portRef, ComponentType.class);
 			return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of component '"
@@ -45,6 +51,9 @@ public class ArcLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);
 			return error(ArcIssueCodes.UNKNOWN_PORT, "unknown port '" + name + "' of component '"
 					+ (owner == null ? "?" : owner.getName()) + "' as trigger");
+		}
+		if (ref == A.getNameRef_Target() && ArcModels.isQualifierPosition(context.getContext())) {
+			return null; // Type.MEMBER: a Java or class-diagram type, checked by the validator (arc.unknown-name)
 		}
 		if (ref == A.getNameRef_Target() || ref == A.getAssignment_Target()) {
 			ComponentType owner = EcoreUtil2.getContainerOfType(context.getContext(), ComponentType.class);

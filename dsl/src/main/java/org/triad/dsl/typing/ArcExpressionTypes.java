@@ -108,6 +108,13 @@ public final class ArcExpressionTypes {
 		if (e instanceof BinaryExpression b) {
 			return binary(b, problems);
 		}
+		if (e instanceof org.triad.dsl.arc.ConditionalExpression c) {
+			String condition = check(c.getCondition(), problems);
+			expect(Kind.BOOLEAN, condition, "condition of '?:'", c, problems);
+			String then = check(c.getThen(), problems);
+			String otherwise = check(c.getOtherwise(), problems);
+			return then.equals(otherwise) ? then : UNKNOWN;
+		}
 		return UNKNOWN;
 	}
 
@@ -127,7 +134,17 @@ public final class ArcExpressionTypes {
 			}
 			return "boolean";
 		}
-		case "<", "<=", ">", ">=" -> {
+		case "&", "|", "^" -> {
+			if (kind(l) == Kind.BOOLEAN && kind(r) == Kind.BOOLEAN) {
+				return "boolean";
+			}
+		}
+		case "<<", ">>", ">>>" -> {
+			expect(Kind.NUMERIC, l, "left operand of '" + op + "'", b, problems);
+			expect(Kind.NUMERIC, r, "right operand of '" + op + "'", b, problems);
+			return kind(l) == Kind.NUMERIC ? promote(l, "int") : UNKNOWN;
+		}
+				case "<", "<=", ">", ">=" -> {
 			expect(Kind.NUMERIC, l, "left operand of '" + op + "'", b, problems);
 			expect(Kind.NUMERIC, r, "right operand of '" + op + "'", b, problems);
 			return "boolean";
@@ -157,6 +174,9 @@ public final class ArcExpressionTypes {
 		if (target instanceof Variable v) {
 			return v.getType() == null ? UNKNOWN : v.getType().trim();
 		}
+		if (target instanceof org.triad.dsl.arc.LocalVariable v) {
+			return v.getType() == null ? UNKNOWN : v.getType().trim();
+		}
 		if (target instanceof ConfigParameter p) {
 			return p.getType() == null ? UNKNOWN : p.getType().trim();
 		}
@@ -165,6 +185,14 @@ public final class ArcExpressionTypes {
 			if (ArcModels.direction(port) == Direction.OUT) {
 				problems.report(ArcIssueCodes.PORT_NOT_READABLE, "outgoing port '" + port.getName() + "' cannot be read: it only sends", r);
 				return UNKNOWN;
+			}
+			String timedProblem = timedReadProblem(r);
+			if (timedProblem != null) {
+				if (!timedProblem.isEmpty()) {
+					problems.report(ArcIssueCodes.PORT_NOT_READABLE, "incoming port '" + port.getName() + "' has no message here: " + timedProblem, r);
+					return UNKNOWN;
+				}
+				return ArcModels.typeName(port).trim();
 			}
 			if (t == null || t.getTrigger() != port) {
 				problems.report(ArcIssueCodes.PORT_NOT_READABLE, "incoming port '" + port.getName() + "' has no message here: "
@@ -177,6 +205,33 @@ public final class ArcExpressionTypes {
 			return ArcModels.typeName(port).trim();
 		}
 		return UNKNOWN;
+	}
+
+	/**
+	 * For a port read in a component that runs in time slices: "" when it is readable (each slice it
+	 * holds the slice's message or null), the reason when it is not (initial actions and the init block
+	 * run before the first slice, MontiArc's NoInputPortsInInitialOutputDecl), null for an event automaton
+	 * of such a component or an event-driven component (the trigger rule applies).
+	 */
+	private static String timedReadProblem(EObject r) {
+		ComponentType c = ArcModels.component(r);
+		if (c == null || !ArcModels.isTimed(c)) {
+			return null;
+		}
+		for (EObject e = r; e != null && e != c; e = e.eContainer()) {
+			if (e.eContainingFeature() == org.triad.dsl.arc.ArcPackage.Literals.AUTOMATON_STATE__INITIAL_ACTIONS
+					|| e.eContainingFeature() == org.triad.dsl.arc.ArcPackage.Literals.COMPONENT_TYPE__INIT_ACTIONS) {
+				return "initial actions run before the first time slice";
+			}
+			if (e instanceof Variable) {
+				return null;
+			}
+		}
+		org.triad.dsl.arc.Automaton a = EcoreUtil2.getContainerOfType(r, org.triad.dsl.arc.Automaton.class);
+		if (a != null && a.getStereotype() == null && ArcModels.allTransitions(a).stream().anyMatch(t -> t.getTrigger() != null)) {
+			return null;
+		}
+		return "";
 	}
 
 	/** Whether a value of type {@code from} may be assigned (or sent) to something of type {@code to} in component {@code c}. */

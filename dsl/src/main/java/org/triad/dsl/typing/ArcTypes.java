@@ -60,4 +60,41 @@ public final class ArcTypes {
 		String boxedTo = BOXES.getOrDefault(to, to);
 		return boxedFrom.equals(boxedTo) || boxedFrom.equals("java.lang." + boxedTo) || boxedTo.equals("java.lang." + boxedFrom);
 	}
+
+	private static final java.util.Map<String, java.util.Set<String>> KNOWN_SUPERTYPES = java.util.Map.of(
+			"Number", java.util.Set.of("Integer", "Long", "Double", "Float", "Short", "Byte", "Number", "java.math.BigInteger", "java.math.BigDecimal"),
+			"CharSequence", java.util.Set.of("String", "CharSequence", "StringBuilder"),
+			"Comparable", java.util.Set.of("Integer", "Long", "Double", "Float", "Short", "Byte", "String", "Boolean", "Character"));
+
+	/**
+	 * Whether a type argument is within a type parameter's upper bound. Known by name for the java.lang
+	 * bounds Number, CharSequence and Comparable (with or without {@code java.lang.}); any other bound is
+	 * left to the Java compiler.
+	 */
+	public static boolean withinBound(String argument, String bound) {
+		String b = erasure(bound).replaceFirst("^java\\.lang\\.", "");
+		String a = erasure(argument).replaceFirst("^java\\.lang\\.", "");
+		if (b.equals("Object") || a.equals(b)) {
+			return true;
+		}
+		java.util.Set<String> known = KNOWN_SUPERTYPES.get(b);
+		if (known == null) {
+			return true;
+		}
+		boolean knownArgument = KNOWN_SUPERTYPES.values().stream().anyMatch(set -> set.contains(a)) || a.equals("Boolean") || a.equals("Character");
+		return !knownArgument || known.contains(a);
+	}
+
+	/** Whether a name is a public class of java.lang ({@code Math}, {@code Long}). */
+	public static boolean isJavaLangClass(String name) {
+		if (!name.matches("[A-Z][A-Za-z0-9_]*")) {
+			return false;
+		}
+		try {
+			Class.forName("java.lang." + name, false, ArcTypes.class.getClassLoader());
+			return true;
+		} catch (ClassNotFoundException | LinkageError e) {
+			return false;
+		}
+	}
 }

@@ -76,4 +76,20 @@ public final class ArcIssueCodes {
 	public static final String TYPE_ARGUMENT_COUNT = "arc.type-argument-count";
 	/** A type argument is a primitive type ({@code Buffer<int>}); Java's generics take reference types ({@code Buffer<Integer>}). */
 	public static final String PRIMITIVE_TYPE_ARGUMENT = "arc.primitive-type-argument";
+
+	/** A component extends itself, directly or through its parents (MontiArc's CircularInheritance, 0xC1100). */
+	public static final String INHERITANCE_CYCLE = "arc.inheritance-cycle";
+	/** {@code <<delayed>>} on an incoming port: only an outgoing port can hold its messages back (MontiArc's DelayOutPortOnly, 0xC1116). */
+	public static final String DELAYED_IN_PORT = "arc.delayed-in-port";
+	/** A port or automaton has two timings ({@code <<sync, timed>>}; MontiArc's OnlyOneTiming, 0xC1114). */
+	public static final String MULTIPLE_TIMINGS = "arc.multiple-timings";
+	/**
+	 * Subcomponents send to each other in a loop and no port on it is {@code <<delayed>>}: within one time
+	 * slice each would wait for the others (MontiArc's FeedbackStrongCausality, 0xC1117).
+	 */
+	public static final String FEEDBACK_WITHOUT_DELAY = "arc.feedback-without-delay";
+	/** A configuration parameter without a default value follows one with (MontiArc's OptionalConfigurationParametersLast, 0xC1126). */
+	public static final String OPTIONAL_PARAMETER_ORDER = "arc.optional-parameter-order";
+	/** A type argument is not within its type parameter's upper bound ({@code Sum<Boolean>} for {@code Sum<T extends Number>}; MontiArc's SubcomponentTypeBound, 0xC1202). */
+	public static final String TYPE_BOUND = "arc.type-bound";
 }

@@ -60,7 +60,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 		List<ArcNamedElement> members = new ArrayList<>();
 		members.addAll(c.getParameters());
 		members.addAll(ArcModels.ports(c));
-		members.addAll(c.getSubcomponents());
+		members.addAll(ArcModels.subcomponents(c));
 		members.addAll(c.getVariables());
 		for (ArcNamedElement m : members) {
 			if (m.getName() == null) {
@@ -146,8 +146,8 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 						A.getArcNamedElement_Name(), ArcIssueCodes.UNCONNECTED_PORT);
 			}
 		}
-		for (Subcomponent sub : c.getSubcomponents()) {
-			ComponentType type = sub.getType();
+		for (Subcomponent sub : ArcModels.subcomponents(c)) {
+			ComponentType type = ArcModels.type(sub);
 			if (sub.getName() == null || type == null || type.eIsProxy()) {
 				continue;
 			}
@@ -162,8 +162,8 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 	@Check
 	public void checkInstantiationCycle(Subcomponent sub) {
-		ComponentType owner = (ComponentType) sub.eContainer();
-		ComponentType type = sub.getType();
+		ComponentType owner = ArcModels.component(sub);
+		ComponentType type = ArcModels.type(sub);
 		if (type == null || type.eIsProxy()) {
 			return;
 		}
@@ -175,12 +175,12 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 			if (t == owner) {
 				error("instantiation cycle: '" + owner.getName() + "' contains '" + sub.getName() + "' of type '" + type.getName()
 						+ "', which " + (type == owner ? "is '" + owner.getName() + "' itself" : "contains '" + owner.getName() + "' again"),
-						sub, A.getSubcomponent_Type(), ArcIssueCodes.INSTANTIATION_CYCLE);
+						sub, A.getArcNamedElement_Name(), ArcIssueCodes.INSTANTIATION_CYCLE);
 				return;
 			}
 			if (seen.add(t)) {
-				for (Subcomponent s : t.getSubcomponents()) {
-					ComponentType st = s.getType();
+				for (Subcomponent s : ArcModels.subcomponents(t)) {
+					ComponentType st = ArcModels.type(s);
 					if (st != null && !st.eIsProxy()) {
 						todo.push(st);
 					}
@@ -191,13 +191,14 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 	@Check
 	public void checkArguments(Subcomponent sub) {
-		ComponentType type = sub.getType();
+		ComponentType type = ArcModels.type(sub);
 		if (type == null || type.eIsProxy()) {
 			return;
 		}
 		int expected = type.getParameters().size();
+		int required = (int) type.getParameters().stream().filter(p -> p.getDefaultValue() == null).count();
 		int actual = sub.getArguments().size();
-		if (expected != actual) {
+		if (actual < required || actual > expected) {
 			error("subcomponent '" + sub.getName() + "' gets " + actual + " argument" + (actual == 1 ? "" : "s") + " but component '"
 					+ type.getName() + "' has " + expected + " configuration parameter" + (expected == 1 ? "" : "s"), sub,
 					A.getArcNamedElement_Name(), ArcIssueCodes.ARGUMENT_COUNT);
@@ -215,11 +216,24 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 	@Check
 	public void checkAutomaton(Automaton automaton) {
 		Set<String> names = new HashSet<>();
-		boolean initialSeen = false;
-		for (AutomatonState s : automaton.getStates()) {
+		for (AutomatonState s : ArcModels.allStates(automaton)) {
 			if (s.getName() != null && !names.add(s.getName())) {
 				error("duplicate state '" + s.getName() + "'", s, A.getArcNamedElement_Name(), ArcIssueCodes.DUPLICATE_NAME);
 			}
+			if (!s.getStates().isEmpty()) {
+				checkInitial(s.getStates(), s, "state '" + s.getName() + "' has substates but none is initial (declare one 'initial state S;')");
+			}
+		}
+		if (checkInitial(automaton.getStates(), automaton, "the automaton has no initial state (declare one 'initial state S;')")) {
+			warnUnreachable(automaton);
+		}
+		checkDeterminism(automaton);
+	}
+
+	/** One initial state among siblings; false if there is none. */
+	private boolean checkInitial(List<AutomatonState> siblings, EObject owner, String noneMessage) {
+		boolean initialSeen = false;
+		for (AutomatonState s : siblings) {
 			if (s.isInitial()) {
 				if (initialSeen) {
 					error("more than one initial state: '" + s.getName() + "' is initial too", s, A.getArcNamedElement_Name(),
@@ -229,28 +243,33 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 			}
 		}
 		if (!initialSeen) {
-			error("the automaton has no initial state (declare one 'initial state S;')", automaton, null, ArcIssueCodes.NO_INITIAL_STATE);
-		} else {
-			warnUnreachable(automaton);
+			error(noneMessage, owner, owner instanceof AutomatonState ? A.getArcNamedElement_Name() : null, ArcIssueCodes.NO_INITIAL_STATE);
 		}
-		checkDeterminism(automaton);
+		return initialSeen;
 	}
 
 	private void warnUnreachable(Automaton automaton) {
+		// entering a state enters its super states and its initial substates; a super state's transitions leave any of its substates
 		Set<AutomatonState> reached = new HashSet<>();
 		Deque<AutomatonState> todo = new ArrayDeque<>();
 		todo.push(ArcModels.initialState(automaton));
+		List<Transition> transitions = ArcModels.allTransitions(automaton);
 		while (!todo.isEmpty()) {
 			AutomatonState s = todo.pop();
-			if (reached.add(s)) {
-				for (Transition t : automaton.getTransitions()) {
+			if (s != null && reached.add(s)) {
+				todo.addAll(ArcModels.ancestry(s));
+				AutomatonState initial = ArcModels.initialState(s.getStates());
+				if (initial != null) {
+					todo.push(initial);
+				}
+				for (Transition t : transitions) {
 					if (t.getSource() == s && t.getTarget() != null && !t.getTarget().eIsProxy()) {
 						todo.push(t.getTarget());
 					}
 				}
 			}
 		}
-		for (AutomatonState s : automaton.getStates()) {
+		for (AutomatonState s : ArcModels.allStates(automaton)) {
 			if (!reached.contains(s)) {
 				warning("state '" + s.getName() + "' is unreachable: no transitions lead to it from the initial state", s,
 						A.getArcNamedElement_Name(), ArcIssueCodes.UNREACHABLE_STATE);
@@ -260,7 +279,7 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 	/** Two transitions of one state and trigger that can both fire: one without a guard, or the same guard twice. */
 	private void checkDeterminism(Automaton automaton) {
-		List<Transition> transitions = automaton.getTransitions();
+		List<Transition> transitions = ArcModels.allTransitions(automaton);
 		for (int i = 0; i < transitions.size(); i++) {
 			Transition later = transitions.get(i);
 			for (int j = 0; j < i; j++) {
@@ -307,22 +326,45 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 				error("the guard must be boolean, not " + type, t.getGuard(), null, ArcIssueCodes.EXPRESSION_TYPE);
 			}
 		}
-		ComponentType c = ArcModels.component(t);
-		for (Statement st : t.getActions()) {
-			if (st instanceof Assignment a) {
-				checkAssignment(a, c);
-			} else if (st instanceof ExpressionStatement es) {
-				ArcExpressionTypes.check(es.getExpression(), this::report);
-				boolean call = es.getExpression() instanceof MemberAccess m && m.isCall() || es.getExpression() instanceof NewInstance;
-				if (!call) {
-					error("only a method call can stand alone in an action; assign or send the value instead", es, null,
-							ArcIssueCodes.EXPRESSION_TYPE);
-				}
-			}
+	}
+
+	@Check
+	public void checkExpressionStatement(ExpressionStatement es) {
+		ArcExpressionTypes.check(es.getExpression(), this::report);
+		boolean call = es.getExpression() instanceof MemberAccess m && m.isCall() || es.getExpression() instanceof NewInstance;
+		if (!call) {
+			error("only a method call can stand alone in an action; assign or send the value instead", es, null, ArcIssueCodes.EXPRESSION_TYPE);
 		}
 	}
 
-	private void checkAssignment(Assignment a, ComponentType c) {
+	@Check
+	public void checkIf(org.triad.dsl.arc.IfStatement i) {
+		String type = ArcExpressionTypes.check(i.getCondition(), this::report);
+		if (!ArcExpressionTypes.isBoolean(type)) {
+			error("the if condition must be boolean, not " + type, i.getCondition(), null, ArcIssueCodes.EXPRESSION_TYPE);
+		}
+	}
+
+	@Check
+	public void checkSwitch(org.triad.dsl.arc.SwitchStatement sw) {
+		ArcExpressionTypes.check(sw.getSubject(), this::report);
+	}
+
+	@Check
+	public void checkLocalVariable(org.triad.dsl.arc.LocalVariable v) {
+		if (v.getInitial() == null || v.getType() == null) {
+			return;
+		}
+		String value = ArcExpressionTypes.check(v.getInitial(), this::report);
+		if (!ArcExpressionTypes.isAssignable(value, v.getType().trim(), ArcModels.component(v))) {
+			error("cannot initialise " + v.getType().trim() + " '" + v.getName() + "' with " + value, v.getInitial(), null,
+					ArcIssueCodes.EXPRESSION_TYPE);
+		}
+	}
+
+	@Check
+	public void checkAssignment(Assignment a) {
+		ComponentType c = ArcModels.component(a);
 		String value = ArcExpressionTypes.check(a.getValue(), this::report);
 		ArcNamedElement target = a.getTarget();
 		if (target == null || target.eIsProxy()) {
@@ -340,6 +382,8 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 			error("configuration parameter '" + p.getName() + "' is fixed when the component is created and cannot be assigned; use a variable",
 					a, A.getAssignment_Target(), ArcIssueCodes.NOT_ASSIGNABLE);
 			return;
+		} else if (target instanceof org.triad.dsl.arc.LocalVariable v) {
+			targetType = v.getType().trim();
 		} else {
 			targetType = ((Variable) target).getType().trim();
 		}
@@ -367,31 +411,218 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 	@Check
 	public void checkTypeArgumentsAreReferenceTypes(Subcomponent sub) {
-		for (int i = 0; i < sub.getTypeArguments().size(); i++) {
-			String argument = sub.getTypeArguments().get(i).trim();
+		for (int i = 0; i < ArcModels.typeArguments(sub).size(); i++) {
+			String argument = ArcModels.typeArguments(sub).get(i).trim();
 			if (ArcExpressionTypes.isPrimitive(argument)) {
 				error("type argument " + argument + " of subcomponent '" + sub.getName() + "' must be a reference type (its box, e.g. "
 						+ (argument.equals("int") ? "Integer" : argument.equals("char") ? "Character"
 								: Character.toUpperCase(argument.charAt(0)) + argument.substring(1)) + ")",
-						sub, A.getSubcomponent_TypeArguments(), i, ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT);
+						sub, A.getArcNamedElement_Name(), ArcIssueCodes.PRIMITIVE_TYPE_ARGUMENT);
 			}
 		}
 	}
 
 	@Check
 	public void checkTypeArguments(Subcomponent sub) {
-		ComponentType type = sub.getType();
+		ComponentType type = ArcModels.type(sub);
 		if (type == null || type.eIsProxy()) {
 			return;
 		}
 		int expected = type.getTypeParameters().size();
-		int actual = sub.getTypeArguments().size();
+		int actual = ArcModels.typeArguments(sub).size();
 		if (expected != actual) {
 			error("subcomponent '" + sub.getName() + "' gives " + actual + " type argument" + (actual == 1 ? "" : "s") + " but component '"
 					+ type.getName() + "' has " + expected + " type parameter" + (expected == 1 ? "" : "s")
 					+ (expected == 0 ? "" : " (" + String.join(", ", ArcModels.typeParameterNames(type)) + ")"), sub,
-					A.getSubcomponent_Type(), ArcIssueCodes.TYPE_ARGUMENT_COUNT);
+					A.getArcNamedElement_Name(), ArcIssueCodes.TYPE_ARGUMENT_COUNT);
 		}
+	}
+
+	private static final Set<String> TIMINGS = Set.of("sync", "timed", "untimed");
+
+	@Check
+	public void checkInheritance(ComponentType c) {
+		ComponentType parent = ArcModels.parent(c);
+		if (parent == null) {
+			return;
+		}
+		Set<ComponentType> seen = new HashSet<>();
+		for (ComponentType t = parent; t != null && !t.eIsProxy(); t = t.getParent()) {
+			if (t == c) {
+				error("inheritance cycle: component '" + c.getName() + "' extends '" + parent.getName() + "', which "
+						+ (parent == c ? "is itself" : "extends '" + c.getName() + "' again"), c, A.getComponentType_Parent(),
+						ArcIssueCodes.INHERITANCE_CYCLE);
+				return;
+			}
+			if (!seen.add(t)) {
+				return;
+			}
+		}
+		int expected = parent.getParameters().size();
+		int required = (int) parent.getParameters().stream().filter(p -> p.getDefaultValue() == null).count();
+		int actual = c.getParentArguments().size();
+		if (actual < required || actual > expected) {
+			error("component '" + c.getName() + "' gives its parent '" + parent.getName() + "' " + actual + " argument" + (actual == 1 ? "" : "s")
+					+ " but it has " + expected + " configuration parameter" + (expected == 1 ? "" : "s"), c, A.getComponentType_Parent(),
+					ArcIssueCodes.ARGUMENT_COUNT);
+		}
+	}
+
+	@Check
+	public void checkPortStereotypes(org.triad.dsl.arc.PortDeclaration d) {
+		if (d.getStereotype() == null) {
+			return;
+		}
+		List<String> values = d.getStereotype().getValues();
+		if (values.contains("delayed") && d.getDirection() == Direction.IN) {
+			error("incoming ports cannot be <<delayed>>: only an outgoing port holds its messages back for a time slice", d, null,
+					ArcIssueCodes.DELAYED_IN_PORT);
+		}
+		checkTimings(values, d);
+	}
+
+	@Check
+	public void checkAutomatonStereotype(Automaton a) {
+		if (a.getStereotype() != null) {
+			checkTimings(a.getStereotype().getValues(), a);
+		}
+	}
+
+	private void checkTimings(List<String> values, EObject where) {
+		List<String> timings = values.stream().filter(TIMINGS::contains).distinct().toList();
+		if (timings.size() > 1) {
+			error("only one timing is allowed, not " + String.join(" and ", timings), where, null, ArcIssueCodes.MULTIPLE_TIMINGS);
+		}
+	}
+
+	@Check
+	public void checkOptionalParametersLast(ComponentType c) {
+		boolean optional = false;
+		for (ConfigParameter p : c.getParameters()) {
+			if (p.getDefaultValue() != null) {
+				optional = true;
+			} else if (optional) {
+				error("configuration parameter '" + p.getName() + "' has no default value but follows one that has: parameters with defaults come last",
+						p, A.getArcNamedElement_Name(), ArcIssueCodes.OPTIONAL_PARAMETER_ORDER);
+			}
+		}
+	}
+
+	@Check
+	public void checkTypeBounds(org.triad.dsl.arc.SubcomponentDeclaration d) {
+		ComponentType type = d.getType();
+		if (type == null || type.eIsProxy() || type.getTypeParameters().size() != d.getTypeArguments().size()) {
+			return;
+		}
+		for (int i = 0; i < d.getTypeArguments().size(); i++) {
+			String bound = type.getTypeParameters().get(i).getUpperBound();
+			String argument = d.getTypeArguments().get(i).trim();
+			if (bound != null && !ArcTypes.withinBound(argument, bound.trim())) {
+				error("type argument " + argument + " is not within the bound of " + type.getName() + "'s type parameter "
+						+ type.getTypeParameters().get(i).getName() + " extends " + bound.trim(), d, A.getSubcomponentDeclaration_TypeArguments(), i,
+						ArcIssueCodes.TYPE_BOUND);
+			}
+		}
+	}
+
+	/** Type.MEMBER in an expression: Type must be a data type of a class diagram, a type parameter or a java.lang class. */
+	@Check
+	public void checkTypeQualifier(org.triad.dsl.arc.NameRef r) {
+		if (!ArcModels.isTypeQualifier(r)) {
+			return;
+		}
+		String name = ArcModels.qualifierText(r);
+		if (ArcModels.typeParameterNames(ArcModels.component(r)).contains(name) || ArcTypes.isJavaLangClass(name) || isDataType(r, name)) {
+			return;
+		}
+		error("unknown name '" + name + "': not a variable, configuration parameter or port of component '" + ArcModels.component(r).getName()
+				+ "', nor a data type of a class diagram or a java.lang class", r, null, ArcIssueCodes.UNKNOWN_NAME);
+	}
+
+	private boolean isDataType(EObject context, String name) {
+		String simple = name.substring(name.lastIndexOf('.') + 1);
+		IResourceDescriptions index = indexProvider.getResourceDescriptions(context.eResource());
+		for (IEObjectDescription d : index.getExportedObjectsByType(org.triad.dsl.triad.TriadPackage.Literals.DOMAIN_TYPE)) {
+			if (d.getName().getLastSegment().equals(simple)) {
+				return true;
+			}
+		}
+		return false;
+	}
+
+	/**
+	 * Subcomponents that run in time slices and send to each other in a loop need a delayed port on it
+	 * (MontiArc's strong causality). Event-driven components (RefArc's) handle messages as they come and
+	 * may form loops.
+	 */
+	@Check
+	public void checkFeedbackLoops(ComponentType c) {
+		List<Subcomponent> subs = ArcModels.subcomponents(c).stream().filter(s -> ArcModels.isTimed(ArcModels.type(s))).toList();
+		Map<Subcomponent, Set<Subcomponent>> next = new HashMap<>();
+		for (Connector con : c.getConnectors()) {
+			PortRef src = con.getSource();
+			if (src == null || src.getSubcomponent() == null || src.getSubcomponent().eIsProxy() || src.getPort() == null || src.getPort().eIsProxy()) {
+				continue;
+			}
+			if (delayedOutput(ArcModels.type(src.getSubcomponent()), src.getPort(), new HashSet<>())) {
+				continue;
+			}
+			for (PortRef t : con.getTargets()) {
+				if (t.getSubcomponent() != null && !t.getSubcomponent().eIsProxy() && subs.contains(t.getSubcomponent())) {
+					next.computeIfAbsent(src.getSubcomponent(), k -> new java.util.LinkedHashSet<>()).add(t.getSubcomponent());
+				}
+			}
+		}
+		Set<Subcomponent> reported = new HashSet<>();
+		for (Subcomponent start : subs) {
+			List<Subcomponent> loop = loopFrom(start, next);
+			if (loop != null && !reported.contains(start)) {
+				reported.addAll(loop);
+				error("feedback loop without a delayed port: " + String.join(" -> ", loop.stream().map(Subcomponent::getName).toList())
+						+ "; within one time slice each would wait for the other (make an outgoing port on the loop <<delayed>>, or put a Delay in it)",
+						start, A.getArcNamedElement_Name(), ArcIssueCodes.FEEDBACK_WITHOUT_DELAY);
+			}
+		}
+	}
+
+	private static List<Subcomponent> loopFrom(Subcomponent start, Map<Subcomponent, Set<Subcomponent>> next) {
+		Deque<List<Subcomponent>> todo = new ArrayDeque<>();
+		todo.add(List.of(start));
+		Set<Subcomponent> seen = new HashSet<>();
+		while (!todo.isEmpty()) {
+			List<Subcomponent> path = todo.poll();
+			for (Subcomponent n : next.getOrDefault(path.get(path.size() - 1), Set.of())) {
+				List<Subcomponent> longer = new ArrayList<>(path);
+				longer.add(n);
+				if (n == start) {
+					return longer;
+				}
+				if (seen.add(n)) {
+					todo.add(longer);
+				}
+			}
+		}
+		return null;
+	}
+
+	/** Whether messages of an outgoing port come a time slice late: it is <<delayed>>, or inside a composed component its sender's is. */
+	private static boolean delayedOutput(ComponentType type, ArcPort port, Set<ArcPort> seen) {
+		if (ArcModels.isDelayed(port)) {
+			return true;
+		}
+		if (type == null || type.eIsProxy() || !ArcModels.isComposed(type) || !seen.add(port)) {
+			return false;
+		}
+		for (Connector con : type.getConnectors()) {
+			for (PortRef t : con.getTargets()) {
+				if (t.getSubcomponent() == null && t.getPort() == port) {
+					PortRef src = con.getSource();
+					return src != null && src.getSubcomponent() != null && !src.getSubcomponent().eIsProxy() && src.getPort() != null
+							&& delayedOutput(ArcModels.type(src.getSubcomponent()), src.getPort(), seen);
+				}
+			}
+		}
+		return false;
 	}
 
 	private static String kind(EObject e) {
@@ -432,16 +663,16 @@ public class TriadArcValidator extends AbstractTriadArcValidator {
 
 		/** A port type of a generic subcomponent's type with its type parameters replaced by the subcomponent's type arguments. */
 		private static String substitute(String portType, Subcomponent sub) {
-			if (sub == null || sub.getType() == null || sub.getType().eIsProxy()) {
+			if (sub == null || ArcModels.type(sub) == null || ArcModels.type(sub).eIsProxy()) {
 				return portType;
 			}
-			List<String> parameters = ArcModels.typeParameterNames(sub.getType());
+			List<String> parameters = ArcModels.typeParameterNames(ArcModels.type(sub));
 			int i = parameters.indexOf(ArcTypes.erasure(portType));
 			if (i < 0) {
 				return portType;
 			}
 			// with the wrong number of type arguments (reported on the subcomponent) the type is unknown
-			return parameters.size() == sub.getTypeArguments().size() ? sub.getTypeArguments().get(i).trim() : null;
+			return parameters.size() == ArcModels.typeArguments(sub).size() ? ArcModels.typeArguments(sub).get(i).trim() : null;
 		}
 
 		boolean canSend() {

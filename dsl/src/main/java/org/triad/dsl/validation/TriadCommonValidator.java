@@ -237,7 +237,7 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 		}
 		IResourceDescriptions index = indexProvider.getResourceDescriptions(element.eResource());
 		List<EObject> candidates = new ArrayList<>();
-		for (EClass type : List.of(P.getClassDiagram(), P.getActor())) {
+		for (EClass type : List.of(P.getClassDiagram(), P.getActor(), org.triad.dsl.arc.ArcPackage.Literals.COMPONENT_TYPE)) {
 			for (IEObjectDescription d : index.getExportedObjectsByType(type)) {
 				EObject resolved = EcoreUtil.resolve(d.getEObjectOrProxy(), element);
 				if (!resolved.eIsProxy() && !candidates.contains(resolved)) {

@@ -389,4 +389,151 @@ class ArcValidationTest {
 	void syntaxErrorsHaveTheSyntaxCode() {
 		assertEquals(List.of("System.arc:10 " + CommonIssueCodes.SYNTAX), found(system("tick -> ;")));
 	}
+
+	// MontiArc 7's constructs: data types from a class diagram, mixed port lists with stereotypes, generic bounds,
+	// default parameters, fields, initial actions, hierarchical states with entry/exit, compute, inheritance, multi-instance.
+	private static final String TYPES = """
+			package demo;
+			classdiagram Types {
+			  public enum Cmd { GO, HALT; }
+			}
+			""";
+	private static final String GATE = """
+			package demo;
+			import demo.Types.*;
+			component Gate<T extends Number>(int limit, int offset = 0) {
+			  port <<sync>> in T x, <<sync>> in Cmd cmd,
+			       <<sync, delayed>> out Integer y;
+			  int count = 0;
+			  <<sync>> automaton {
+			    initial { y = 0; } state Closed {
+			      entry / { count = count + 1; }
+			      exit / { count = count - 1; }
+			      initial state Waiting;
+			      state Ready;
+			      Waiting -> Ready [cmd == Cmd.GO];
+			    };
+			    state Open;
+			    Ready -> Open [x.intValue() > limit] / { y = Math.max(limit, offset); };
+			    Open -> Closed [cmd == Cmd.HALT];
+			  }
+			}
+			""";
+	private static final String PASS = """
+			package demo;
+			component Pass {
+			  port <<sync>> in Integer i;
+			  port <<sync>> out Integer o;
+			  compute {
+			    int v = i == null ? 0 : i;
+			    if (v > 3) {
+			      o = v << 1;
+			    } else {
+			      switch (v) {
+			        case 1: { o = 10; break; }
+			        default: { o = v; break; }
+			      }
+			    }
+			  }
+			}
+			""";
+	/** Line 6: the subcomponents; line 7 onwards: connectors. */
+	private static final String RING = """
+			package demo;
+			component Ring {
+			  port <<sync>> in demo.Types.Cmd cmd,
+			       <<sync>> out Integer out;
+			  Pass p, q;
+			  Gate<Integer> g(1), h(2, 3);
+			  p.o -> q.i;
+			  q.o -> g.x, out;
+			  g.y -> p.i;
+			  cmd -> g.cmd, h.cmd;
+			  p.o -> h.x;
+			}
+			""";
+	private static final String WIDE = """
+			package demo;
+			component Wide(int l) extends Gate<Integer>(l) {
+			}
+			""";
+
+	private static List<String> montiArc(Map<String, String> replaced) {
+		Map<String, String> files = new LinkedHashMap<>();
+		files.put("Types.cd", TYPES);
+		files.put("Gate.arc", GATE);
+		files.put("Pass.arc", PASS);
+		files.put("Ring.arc", RING);
+		files.put("Wide.arc", WIDE);
+		files.putAll(replaced);
+		return ArcModelSet.of(files).issues().stream().filter(ArcModelSet.Found::error).map(f -> f.file() + ":" + f.line() + " " + f.code()).toList();
+	}
+
+	@Test
+	void montiArcConstructsCheckClean() {
+		assertEquals(List.of(), montiArc(Map.of()));
+	}
+
+	@Test
+	void inheritanceHasNoCycles() {
+		assertEquals(List.of("Wide.arc:2 " + ArcIssueCodes.INHERITANCE_CYCLE, "Wider.arc:2 " + ArcIssueCodes.INHERITANCE_CYCLE),
+				montiArc(Map.of("Wide.arc", "package demo;\ncomponent Wide extends Wider {\n}\n", "Wider.arc",
+						"package demo;\ncomponent Wider extends Wide {\n}\n")).stream().sorted().toList());
+	}
+
+	@Test
+	void parentArgumentsMatchItsParameters() {
+		assertEquals(List.of("Wide.arc:2 " + ArcIssueCodes.ARGUMENT_COUNT), montiArc(Map.of("Wide.arc", WIDE.replace("(l) {", "(l, 1, 2) {"))));
+	}
+
+	@Test
+	void onlyOutgoingPortsAreDelayed() {
+		assertEquals(List.of("Pass.arc:3 " + ArcIssueCodes.DELAYED_IN_PORT),
+				montiArc(Map.of("Pass.arc", PASS.replace("port <<sync>> in Integer i;", "port <<delayed>> in Integer i;"))));
+	}
+
+	@Test
+	void aPortHasOneTiming() {
+		assertEquals(List.of("Pass.arc:3 " + ArcIssueCodes.MULTIPLE_TIMINGS),
+				montiArc(Map.of("Pass.arc", PASS.replace("port <<sync>> in Integer i;", "port <<sync, timed>> in Integer i;"))));
+	}
+
+	@Test
+	void feedbackLoopsNeedADelayedPort() {
+		assertEquals(List.of("Ring.arc:5 " + ArcIssueCodes.FEEDBACK_WITHOUT_DELAY),
+				montiArc(Map.of("Ring.arc", RING.replace("  g.y -> p.i;\n", "  q.o -> p.i;\n").replace("q.o -> g.x, out;", "g.y -> g.x;\n  h.y -> out;")
+						.replace("  cmd -> g.cmd, h.cmd;\n  p.o -> h.x;\n", "  cmd -> g.cmd, h.cmd;\n  p.o -> h.x;\n"))));
+	}
+
+	@Test
+	void parametersWithDefaultsComeLast() {
+		assertEquals(List.of("Gate.arc:3 " + ArcIssueCodes.OPTIONAL_PARAMETER_ORDER),
+				montiArc(Map.of("Gate.arc", GATE.replace("(int limit, int offset = 0)", "(int limit = 1, int offset)"))));
+	}
+
+	@Test
+	void typeArgumentsAreWithinTheirBounds() {
+		// both instances of the declaration take String: beyond the bound, and their ports then take String
+		assertEquals(List.of("Ring.arc:11 " + ArcIssueCodes.TYPE_MISMATCH, "Ring.arc:6 " + ArcIssueCodes.TYPE_BOUND),
+				montiArc(Map.of("Ring.arc", RING.replace("Gate<Integer> g(1)", "Gate<String> g(1)").replace("q.o -> g.x, out;", "q.o -> out;")))
+						.stream().sorted().toList());
+	}
+
+	@Test
+	void qualifiedNamesInExpressionsAreKnownTypes() {
+		assertEquals(List.of("Gate.arc:16 " + ArcIssueCodes.UNKNOWN_NAME),
+				montiArc(Map.of("Gate.arc", GATE.replace("Math.max(limit, offset)", "Maths.max(limit, offset)"))));
+	}
+
+	@Test
+	void initialActionsReadNoPort() {
+		assertEquals(List.of("Gate.arc:8 " + ArcIssueCodes.PORT_NOT_READABLE),
+				montiArc(Map.of("Gate.arc", GATE.replace("initial { y = 0; }", "initial { y = x.intValue(); }"))));
+	}
+
+	@Test
+	void superStatesHaveAnInitialSubstate() {
+		assertEquals(List.of("Gate.arc:8 " + ArcIssueCodes.NO_INITIAL_STATE),
+				montiArc(Map.of("Gate.arc", GATE.replace("initial state Waiting;", "state Waiting;"))));
+	}
 }

@@ -22,7 +22,7 @@ class RefArcModelsTest {
 		List<String> components = app.resourceSet().getResources().stream().map(Resource::getContents)
 				.filter(c -> !c.isEmpty() && c.get(0) instanceof ArcModel)
 				.map(c -> ((ArcModel) c.get(0)).getComponent())
-				.map(c -> c.getName() + (c.getSubcomponents().isEmpty() ? "" : "/" + c.getSubcomponents().size() + "/" + c.getConnectors().size()))
+				.map(c -> c.getName() + (org.triad.dsl.semantics.ArcModels.subcomponents(c).isEmpty() ? "" : "/" + org.triad.dsl.semantics.ArcModels.subcomponents(c).size() + "/" + c.getConnectors().size()))
 				.sorted().toList();
 		assertEquals(List.of("ActionExecutor", "Controller", "OpenRefArc/4/12", "PlanVerifier", "Planner", "RefArc/4/11", "RemoteOperator",
 				"StateProvider"), components);

@@ -31,7 +31,7 @@ public class ArcDiagram {
 		b.append("  node [").append(FONT).append(", fontsize=11]; edge [").append(FONT).append(", fontsize=9];\n");
 		ports(b, c);
 		if (ArcModels.isComposed(c)) {
-			for (Subcomponent s : c.getSubcomponents()) {
+			for (Subcomponent s : ArcModels.subcomponents(c)) {
 				b.append("  ").append(quote("sub:" + s.getName())).append(" [shape=record, style=\"rounded,filled\", fillcolor=\"#eef3fb\", label=")
 						.append("\"").append(record(s).replace("\"", "\\\"")).append("\"];\n");
 			}
@@ -76,10 +76,10 @@ public class ArcDiagram {
 
 	/** A subcomponent as a record: its incoming ports, its name and type, its outgoing ports. */
 	private static String record(Subcomponent s) {
-		ComponentType t = s.getType();
+		ComponentType t = ArcModels.type(s);
 		String type = t == null || t.eIsProxy() ? "?" : t.getName();
-		if (!s.getTypeArguments().isEmpty()) {
-			type += "<" + s.getTypeArguments().stream().map(String::trim).collect(Collectors.joining(", ")) + ">";
+		if (!ArcModels.typeArguments(s).isEmpty()) {
+			type += "<" + ArcModels.typeArguments(s).stream().map(String::trim).collect(Collectors.joining(", ")) + ">";
 		}
 		String middle = recordText(s.getName() + " : " + type);
 		if (t == null || t.eIsProxy()) {

@@ -28,6 +28,7 @@ public class ArcGenerator extends AbstractGenerator {
 	private final Function<ComponentType, HandwrittenCode> handwritten;
 	private final AtomicComponentTemplate atomic;
 	private final ComposedComponentTemplate composed;
+	private final TimedComponentTemplate timed;
 
 	/** For Xtext builders: hand-written code is looked for beside the models ({@link HandwrittenCode#besideModelsOf}). */
 	public ArcGenerator() {
@@ -48,6 +49,7 @@ public class ArcGenerator extends AbstractGenerator {
 		this.handwritten = handwritten;
 		this.atomic = new AtomicComponentTemplate(names);
 		this.composed = new ComposedComponentTemplate(names);
+		this.timed = new TimedComponentTemplate(names);
 	}
 
 	@Override
@@ -65,6 +67,8 @@ public class ArcGenerator extends AbstractGenerator {
 		Map<String, String> files = new LinkedHashMap<>();
 		if (ArcModels.isComposed(c)) {
 			files.put(names.javaFile(c, composed.className(c, hand)), tidy(composed.render(c, hand)));
+		} else if (ArcModels.isTimed(c)) {
+			files.put(names.javaFile(c, timed.className(c)), tidy(timed.render(c)));
 		} else {
 			files.put(names.javaFile(c, atomic.className(c, hand)), tidy(atomic.render(c, hand)));
 		}

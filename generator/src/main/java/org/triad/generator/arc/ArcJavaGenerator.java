@@ -7,6 +7,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.triad.dsl.triad.ClassDiagram;
 import java.util.Map;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -37,10 +40,26 @@ public final class ArcJavaGenerator {
 		if (!errors.isEmpty()) {
 			throw new IllegalStateException("the .arc models have errors:\n" + errors);
 		}
-		ArcGenerator generator = new ArcGenerator(new ArcNames(), handwritten);
+		ArcNames names = new ArcNames();
+		List<ClassDiagram> diagrams = new ArrayList<>();
+		for (Resource r : app.resourceSet().getResources()) {
+			for (EObject root : r.getContents()) {
+				if (root instanceof ClassDiagram cd) {
+					diagrams.add(cd);
+				}
+			}
+		}
+		names.useDataTypes(DataTypes.of(diagrams));
+		ArcGenerator generator = new ArcGenerator(names, handwritten);
 		List<Path> written = new ArrayList<>();
 		try {
 			deleteRecursively(output);
+			for (Map.Entry<String, String> file : names.dataTypes().files().entrySet()) {
+				Path target = output.resolve(file.getKey());
+				Files.createDirectories(target.getParent());
+				Files.writeString(target, file.getValue());
+				written.add(target);
+			}
 			for (Resource r : app.resourceSet().getResources()) {
 				boolean own = r.getURI().isFile() && Path.of(r.getURI().toFileString()).startsWith(app.root());
 				if (own && !r.getContents().isEmpty() && r.getContents().get(0) instanceof ArcModel m && m.getComponent() != null) {

@@ -19,6 +19,7 @@ import org.triad.dsl.typing.ArcTypes;
  * subclass of the generated {@link #topClass TOP class}.
  */
 public class ArcNames {
+	private DataTypes dataTypes = DataTypes.NONE;
 	public static final String RUNTIME_PACKAGE = "org.triad.runtime.component";
 	/** Transitions without a trigger taken in a row before the automaton is considered to loop. */
 	public static final int MAX_COMPLETIONS = 1000;
@@ -147,7 +148,7 @@ public class ArcNames {
 
 	/** The type argument of a port: the model's type with primitives boxed. */
 	public String portTypeArgument(ArcPort p) {
-		String t = ArcModels.typeName(p).trim();
+		String t = javaType(ArcModels.typeName(p).trim());
 		return BOXES.getOrDefault(t, t);
 	}
 
@@ -168,6 +169,32 @@ public class ArcNames {
 	public boolean isGeneric(ArcPort p) {
 		String t = portTypeArgument(p);
 		return t.contains("<") || ArcModels.typeParameterNames(ArcModels.component(p)).contains(ArcTypes.erasure(t));
+	}
+
+	/**
+	 * A type name of the model as Java: a class diagram's data type is written {@code p.Diagram.Type} in
+	 * MontiArc and generated as {@code p.Type} (the diagram's package holds its types).
+	 */
+	public String javaType(String modelType) {
+		return dataTypes.javaType(modelType);
+	}
+
+	/** A subcomponent argument (opaque Java text) with data type names as Java. */
+	public String javaArgument(String argument) {
+		return dataTypes.javaType(argument);
+	}
+
+	/** The class diagrams whose types the models name. */
+	public void useDataTypes(DataTypes types) {
+		this.dataTypes = types;
+	}
+
+	public DataTypes dataTypes() {
+		return dataTypes;
+	}
+
+	public String timedStateField() {
+		return "state";
 	}
 
 	static String identifier(String name) {

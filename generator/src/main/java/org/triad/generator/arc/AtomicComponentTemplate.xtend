@@ -46,7 +46,7 @@ class AtomicComponentTemplate {
 				package «pkg»;
 
 			«ENDIF»
-			«FOR i : JavaImports.of(c, runtime)»
+			«FOR i : JavaImports.of(c, runtime, names.dataTypes)»
 				import «i»;
 			«ENDFOR»
 

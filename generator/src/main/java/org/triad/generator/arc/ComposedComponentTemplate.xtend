@@ -39,7 +39,7 @@ class ComposedComponentTemplate {
 				package «pkg»;
 
 			«ENDIF»
-			«FOR i : JavaImports.of(c, runtime)»
+			«FOR i : JavaImports.of(c, runtime, names.dataTypes)»
 				import «i»;
 			«ENDFOR»
 
@@ -55,13 +55,13 @@ class ComposedComponentTemplate {
 					«port(p)»
 				«ENDFOR»
 
-				«FOR s : c.subcomponents»
+				«FOR s : ArcModels.subcomponents(c)»
 					public final «subcomponentClass(c, s)» «names.subcomponentField(s)»;
 				«ENDFOR»
 
 				«IF handwritten»protected«ELSE»public«ENDIF» «cls»(«c.parameters.map[type + " " + names.parameter(name)].join(", ")») {
-					«FOR s : c.subcomponents»
-						«names.subcomponentField(s)» = subcomponent("«s.name»", new «subcomponentConstructor(c, s)»(«s.arguments.join(", ")»));
+					«FOR s : ArcModels.subcomponents(c)»
+						«names.subcomponentField(s)» = subcomponent("«s.name»", new «subcomponentConstructor(c, s)»(«s.arguments.map[names.javaArgument(it)].join(", ")»));
 					«ENDFOR»
 					«names.connectMethod»();
 				}
@@ -81,16 +81,16 @@ class ComposedComponentTemplate {
 	}
 
 	private def String subcomponentRaw(ComponentType owner, Subcomponent s) {
-		val type = s.type
+		val type = ArcModels.type(s)
 		if (names.javaPackage(type) == names.javaPackage(owner)) names.componentClass(type) else names.qualifiedComponentClass(type)
 	}
 
 	private def String subcomponentClass(ComponentType owner, Subcomponent s) {
-		subcomponentRaw(owner, s) + (if (s.typeArguments.empty) "" else "<" + s.typeArguments.map[trim].join(", ") + ">")
+		subcomponentRaw(owner, s) + (if (ArcModels.typeArguments(s).empty) "" else "<" + ArcModels.typeArguments(s).map[names.javaType(it.trim)].join(", ") + ">")
 	}
 
 	private def String subcomponentConstructor(ComponentType owner, Subcomponent s) {
-		subcomponentRaw(owner, s) + (if (s.typeArguments.empty) "" else "<>")
+		subcomponentRaw(owner, s) + (if (ArcModels.typeArguments(s).empty) "" else "<>")
 	}
 
 	private def String connector(Connector con) {

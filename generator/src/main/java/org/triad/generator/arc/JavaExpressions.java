@@ -5,6 +5,13 @@ import java.util.stream.Collectors;
 
 import org.triad.dsl.arc.ArcNamedElement;
 import org.triad.dsl.arc.ArcPort;
+import org.triad.dsl.arc.Block;
+import org.triad.dsl.arc.BreakStatement;
+import org.triad.dsl.arc.IfStatement;
+import org.triad.dsl.arc.LocalVariable;
+import org.triad.dsl.arc.SwitchCase;
+import org.triad.dsl.arc.SwitchStatement;
+import org.triad.dsl.semantics.ArcModels;
 import org.triad.dsl.arc.Assignment;
 import org.triad.dsl.arc.BinaryExpression;
 import org.triad.dsl.arc.BooleanLiteral;
@@ -27,20 +34,72 @@ import org.triad.dsl.typing.ArcExpressionTypes;
  */
 public class JavaExpressions {
 	private final ArcNames names;
+	private final boolean timed;
 
 	public JavaExpressions(ArcNames names) {
+		this(names, false);
+	}
+
+	/** For a timed component, sending is {@code emit}: a delayed port holds the message for the next slice. */
+	public JavaExpressions(ArcNames names, boolean timed) {
 		this.names = names;
+		this.timed = timed;
 	}
 
 	public String statement(Statement s) {
 		if (s instanceof Assignment a) {
 			ArcNamedElement target = a.getTarget();
 			if (target instanceof ArcPort p) {
-				return names.portField(p) + ".send(" + expression(a.getValue()) + ");";
+				return timed ? "emit(" + names.portField(p) + ", " + expression(a.getValue()) + ");"
+						: names.portField(p) + ".send(" + expression(a.getValue()) + ");";
+			}
+			if (target instanceof LocalVariable) {
+				return names.field(target) + " = " + expression(a.getValue()) + ";";
 			}
 			return "this." + names.field(target) + " = " + expression(a.getValue()) + ";";
 		}
+		if (s instanceof LocalVariable v) {
+			return names.javaType(v.getType().trim()) + " " + names.field(v) + " = " + expression(v.getInitial()) + ";";
+		}
+		if (s instanceof Block b) {
+			return "{\n" + statements(b.getStatements()) + "}";
+		}
+		if (s instanceof IfStatement i) {
+			return "if (" + expression(i.getCondition()) + ") " + block(i.getThenBranch())
+					+ (i.getElseBranch() == null ? "" : " else " + block(i.getElseBranch()));
+		}
+		if (s instanceof SwitchStatement sw) {
+			StringBuilder b = new StringBuilder("switch (" + expression(sw.getSubject()) + ") {\n");
+			for (SwitchCase c : sw.getCases()) {
+				b.append(c.isOtherwise() ? "default:" : "case " + caseLabel(c.getLabel()) + ":").append(" {\n").append(statements(c.getStatements())).append("}\n");
+			}
+			return b.append("}").toString();
+		}
+		if (s instanceof BreakStatement) {
+			return "break;";
+		}
 		return expression(((ExpressionStatement) s).getExpression()) + ";";
+	}
+
+	/** Statements, one a line. */
+	public String statements(List<Statement> list) {
+		StringBuilder b = new StringBuilder();
+		for (Statement st : list) {
+			b.append(statement(st)).append("\n");
+		}
+		return b.toString();
+	}
+
+	private String block(Statement s) {
+		return s instanceof Block ? statement(s) : "{\n" + statement(s) + "\n}";
+	}
+
+	/** A case label: an enum constant is written without its type in Java. */
+	private String caseLabel(Expression e) {
+		if (e instanceof MemberAccess m && !m.isCall() && m.getReceiver() instanceof NameRef r && ArcModels.isTypeQualifier(r)) {
+			return m.getMember();
+		}
+		return expression(e);
 	}
 
 	public String expression(Expression e) {
@@ -57,8 +116,14 @@ public class JavaExpressions {
 			return "null";
 		}
 		if (e instanceof NameRef r) {
+			if (ArcModels.isTypeQualifier(r)) {
+				return names.javaType(ArcModels.qualifierText(r));
+			}
 			// the trigger port's message is the handler's parameter of the port's name; others are fields
-			return r.getTarget() instanceof ArcPort p ? names.handlerParameter(p) : "this." + names.field(r.getTarget());
+			if (r.getTarget() instanceof ArcPort p) {
+				return names.handlerParameter(p);
+			}
+			return r.getTarget() instanceof LocalVariable ? names.field(r.getTarget()) : "this." + names.field(r.getTarget());
 		}
 		if (e instanceof NewInstance n) {
 			return "new " + n.getType().trim() + (n.isDiamond() ? "<>" : "") + "(" + arguments(n.getArguments()) + ")";
@@ -68,6 +133,9 @@ public class JavaExpressions {
 		}
 		if (e instanceof UnaryExpression u) {
 			return u.getOp() + "(" + expression(u.getOperand()) + ")";
+		}
+		if (e instanceof org.triad.dsl.arc.ConditionalExpression c) {
+			return "(" + expression(c.getCondition()) + " ? " + expression(c.getThen()) + " : " + expression(c.getOtherwise()) + ")";
 		}
 		BinaryExpression b = (BinaryExpression) e;
 		String l = expression(b.getLeft());

@@ -16,6 +16,11 @@ final class JavaImports {
 	}
 
 	static Set<String> of(ComponentType c, Set<String> runtimeTypes) {
+		return of(c, runtimeTypes, DataTypes.NONE);
+	}
+
+	/** With imports of class-diagram types ({@code p.Diagram.T}, {@code p.Diagram.*}) as their Java package's ({@code p.T}, {@code p.*}). */
+	static Set<String> of(ComponentType c, Set<String> runtimeTypes, DataTypes dataTypes) {
 		Set<String> imports = new LinkedHashSet<>();
 		for (String t : runtimeTypes) {
 			imports.add(ArcNames.RUNTIME_PACKAGE + "." + t);
@@ -23,7 +28,10 @@ final class JavaImports {
 		String own = ArcModels.packageName(c);
 		for (String i : ArcModels.imports(c)) {
 			if (!i.equals(own + ".*")) {
-				imports.add(i);
+				String java = dataTypes.javaImport(i);
+				if (!java.equals(own + ".*")) {
+					imports.add(java);
+				}
 			}
 		}
 		return imports;

@@ -81,6 +81,8 @@ public abstract class Scheduler implements AutoCloseable {
             for (Port<?> t : out.targets()) {
                 deliver(t, message);
             }
+        } else if (!port.type().isInstance(message)) {
+            fault(port.owner(), port.name(), message, new IllegalArgumentException(message.getClass().getName() + " message does not fit " + port));
         } else if (port.owner() instanceof AtomicComponent atomic) {
             enqueue(Envelope.message(atomic, (InPort<?>) port, message));
         } else if (port.targets().isEmpty()) {

@@ -1,5 +1,6 @@
 package org.triad.dsl.ide.server;
 
+import org.triad.dsl.semantics.ArcModels;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
@@ -195,7 +196,7 @@ public class TriadLanguageServer extends org.eclipse.xtext.ide.server.LanguageSe
 			return d.getType();
 		}
 		if (e instanceof Subcomponent s) {
-			return s.getType();
+			return ArcModels.type(s);
 		}
 		return null;
 	}

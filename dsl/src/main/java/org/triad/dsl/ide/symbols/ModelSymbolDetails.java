@@ -1,5 +1,6 @@
 package org.triad.dsl.ide.symbols;
 
+import org.triad.dsl.semantics.ArcModels;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.ide.server.symbol.DocumentSymbolMapper.DocumentSymbolDetailsProvider;
 import org.triad.dsl.arc.ArcPort;
@@ -49,8 +50,8 @@ public class ModelSymbolDetails extends DocumentSymbolDetailsProvider {
 		if (o instanceof ArcPort p && p.eContainer() instanceof PortDeclaration d) {
 			return d.getDirection().getLiteral() + " " + d.getType();
 		}
-		if (o instanceof Subcomponent s && s.getType() != null && !s.getType().eIsProxy()) {
-			return s.getType().getName();
+		if (o instanceof Subcomponent s && ArcModels.type(s) != null && !ArcModels.type(s).eIsProxy()) {
+			return ArcModels.type(s).getName();
 		}
 		if (o instanceof ComponentType c) {
 			return "component";

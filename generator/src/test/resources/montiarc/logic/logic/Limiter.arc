@@ -1,0 +1,4 @@
+package logic;
+
+component Limiter(int max) extends Clamp<Integer>(max) {
+}
