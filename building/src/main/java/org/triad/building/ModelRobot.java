@@ -9,8 +9,6 @@ import org.triad.refarc.StateSource;
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
-import org.triad.runtime.schema.Exprs;
-import org.triad.runtime.schema.ModelEvaluationException;
 import org.triad.runtime.schema.Transitions;
 
 /**
@@ -56,12 +54,7 @@ public final class ModelRobot implements StateSource, ActionRunner {
 
     @Override
     public Optional<String> violatedPrecondition(GroundAction a, State now) {
-        try {
-            return transitions.isApplicable(a, now) ? Optional.empty()
-                    : Optional.of("precondition " + Exprs.show(transitions.schemaOf(a).pre()) + " does not hold");
-        } catch (ModelEvaluationException e) {
-            return Optional.of(e.getMessage());
-        }
+        return transitions.violatedPrecondition(a, now);
     }
 
     @Override

@@ -9,8 +9,6 @@ import java.util.Set;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 import org.triad.runtime.schema.AppSchema;
-import org.triad.runtime.schema.Exprs;
-import org.triad.runtime.schema.ModelEvaluationException;
 import org.triad.runtime.schema.Transitions;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
@@ -47,12 +45,7 @@ public final class DryRunWorld implements StateSource, ActionRunner {
 
 	@Override
 	public Optional<String> violatedPrecondition(GroundAction a, State now) {
-		try {
-			return transitions.isApplicable(a, now) ? Optional.empty()
-					: Optional.of("precondition " + Exprs.show(transitions.schemaOf(a).pre()) + " does not hold");
-		} catch (ModelEvaluationException e) {
-			return Optional.of(e.getMessage());
-		}
+		return transitions.violatedPrecondition(a, now);
 	}
 
 	@Override

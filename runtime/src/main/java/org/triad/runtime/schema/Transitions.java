@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.GroundAction;
@@ -43,6 +44,18 @@ public final class Transitions {
 	public boolean isApplicable(GroundAction a, State state) {
 		ActionSchema s = schemaOf(a);
 		return evaluator.holds(s.pre(), state, binding(s, a));
+	}
+
+	/**
+	 * Why the action cannot run in the state (its precondition, shown, or why it cannot be evaluated), or
+	 * empty when it can: what an ActionExecutor reports before a robot would act on a stale plan.
+	 */
+	public Optional<String> violatedPrecondition(GroundAction a, State state) {
+		try {
+			return isApplicable(a, state) ? Optional.empty() : Optional.of("precondition " + Exprs.show(schemaOf(a).pre()) + " does not hold");
+		} catch (ModelEvaluationException e) {
+			return Optional.of(e.getMessage());
+		}
 	}
 
 	/** The state after the action's effects; the precondition is not checked here. */

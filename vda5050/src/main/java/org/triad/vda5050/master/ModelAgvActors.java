@@ -19,8 +19,6 @@ import org.triad.runtime.schema.ActionSchema;
 import org.triad.runtime.schema.AppSchema;
 import org.triad.runtime.schema.Effect;
 import org.triad.runtime.schema.Expr;
-import org.triad.runtime.schema.Exprs;
-import org.triad.runtime.schema.ModelEvaluationException;
 import org.triad.runtime.schema.PropertySchema;
 import org.triad.runtime.schema.Transitions;
 import org.triad.vda5050.protocol.AgvState;
@@ -137,12 +135,7 @@ public final class ModelAgvActors implements StateSource, ActionRunner {
 
     @Override
     public Optional<String> violatedPrecondition(GroundAction a, State now) {
-        try {
-            return transitions.isApplicable(a, now) ? Optional.empty()
-                    : Optional.of("precondition " + Exprs.show(transitions.schemaOf(a).pre()) + " does not hold");
-        } catch (ModelEvaluationException e) {
-            return Optional.of(e.getMessage());
-        }
+        return transitions.violatedPrecondition(a, now);
     }
 
     @Override
