@@ -38,10 +38,13 @@ class EmbeddedDatabaseTest {
         Path file = dir.resolve("tasks.db");
         long pages = Files.size(file) / 4096;
         assertTrue(pages > 10, "pages: " + pages);
+        // a page of the task table itself (where a task's arguments are stored), wherever the schema puts it
+        long taskPage = pageHolding(Files.readAllBytes(file), "{\"dst\":\"room200\"}");
+        assertTrue(taskPage > 0, "the task table's page: " + taskPage);
         try (RandomAccessFile f = new RandomAccessFile(file.toFile(), "rw")) {
             byte[] garbage = new byte[4096];
             Arrays.fill(garbage, (byte) 0x5a);
-            f.seek(pages / 2 * 4096);
+            f.seek(taskPage * 4096);
             f.write(garbage);
         }
         ServiceError refused = assertThrows(ServiceError.class, () -> TaskStore.open(db).close());
@@ -98,5 +101,20 @@ class EmbeddedDatabaseTest {
             assertEquals(null, again.notice(), "moved once");
             assertEquals(3, again.tasks(null, 10).size());
         }
+    }
+
+    /** The number of the 4096-byte page whose bytes hold {@code text}, or -1. */
+    private static long pageHolding(byte[] file, String text) {
+        byte[] needle = text.getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        outer:
+        for (int i = 0; i + needle.length <= file.length; i++) {
+            for (int j = 0; j < needle.length; j++) {
+                if (file[i + j] != needle[j]) {
+                    continue outer;
+                }
+            }
+            return i / 4096;
+        }
+        return -1;
     }
 }
