@@ -236,7 +236,7 @@ class VdaFaultsTest {
             // after the first silence the re-plans meet the same frozen robot: silent again, or by then gone
             // by its last will (its keep-alive ran out); either is the true cause, named with the robot
             assertAbortedWithRemoteOperation(run, r -> r.contains("no state from AGV triad/courier-1")
-                    || r.contains("AGV triad/courier-1 reported CONNECTIONBROKEN"));
+                    || r.contains("AGV triad/courier-1 reported CONNECTIONBROKEN") || r.contains("AGV triad/courier-1 is CONNECTIONBROKEN"));
         }
         assertEquals(List.of(), monitor.violations());
     }
