@@ -151,23 +151,31 @@ public final class FleetService implements AutoCloseable {
             store.updateTask(t.id(), TaskState.QUEUED, null, null, "interrupted by a service restart", now);
         }
         for (TaskRow t : store.tasksInOrder(TaskState.QUEUED)) {
-            try {
-                TaskCall call = catalog.check(request(t));
-                calls.put(t.id(), call);
-                priorities.put(t.id(), t.priority());
-                queue.add(t.id());
-                if (t.preferredRobot() != null) {
-                    preferred.put(t.id(), t.preferredRobot());
-                }
-            } catch (ServiceError e) {
-                if (e.code().equals("database-unavailable")) {
-                    throw e;
-                }
-                abort(t.id(), null, null, "the task no longer fits the models or the world: " + e.getMessage(), now);
-            }
+            calls.remove(t.id()); // checked afresh against the models of this start
+            enqueueStored(t, now);
         }
         lastSync = System.nanoTime();
         return interrupted.size();
+    }
+
+    /**
+     * Puts a task queued in the database into the queue in memory (its priority first: the queue orders
+     * by it); a task that no longer fits the models is aborted with the reason. Call with the lock held.
+     */
+    private void enqueueStored(TaskRow t, Instant now) {
+        try {
+            calls.computeIfAbsent(t.id(), id -> catalog.check(request(t)));
+            priorities.put(t.id(), t.priority());
+            queue.add(t.id());
+            if (t.preferredRobot() != null) {
+                preferred.put(t.id(), t.preferredRobot());
+            }
+        } catch (ServiceError e) {
+            if (e.code().equals("database-unavailable")) {
+                throw e;
+            }
+            abort(t.id(), null, null, "the task no longer fits the models or the world: " + e.getMessage(), now);
+        }
     }
 
     /**
@@ -181,19 +189,7 @@ public final class FleetService implements AutoCloseable {
         for (TaskRow t : store.tasksInOrder(TaskState.QUEUED)) {
             queued.add(t.id());
             if (!queue.contains(t.id())) {
-                try {
-                    calls.computeIfAbsent(t.id(), id -> catalog.check(request(t)));
-                    priorities.put(t.id(), t.priority());
-                    queue.add(t.id());
-                    if (t.preferredRobot() != null) {
-                        preferred.put(t.id(), t.preferredRobot());
-                    }
-                } catch (ServiceError e) {
-                    if (e.code().equals("database-unavailable")) {
-                        throw e;
-                    }
-                    abort(t.id(), null, null, "the task no longer fits the models or the world: " + e.getMessage(), now);
-                }
+                enqueueStored(t, now);
             }
         }
         queue.removeIf(id -> !queued.contains(id));
