@@ -29,6 +29,13 @@ public final class PddlParser {
         return new PddlParser(source).problem(SExpr.read(text, source));
     }
 
+    /** A metric's text, {@code minimize (total-cost)} (what {@link Problem#metric()} holds); a bad one is a located error. */
+    static PlanMetric parseMetric(String text, String source) {
+        SExpr e = SExpr.read("(" + text + ")", source);
+        PddlParser p = new PddlParser(source);
+        return p.metric(e, e.items);
+    }
+
     public static Domain parseDomain(Path file) throws IOException {
         return parseDomain(Files.readString(file), file.toString());
     }
@@ -466,6 +473,20 @@ public final class PddlParser {
         }
     }
 
+    /** {@code minimize|maximize EXPRESSION}; a bare {@code total-time} (as temporal problems write it) is the fluent. */
+    private PlanMetric metric(SExpr at, List<SExpr> rest) {
+        if (rest.size() != 2 || rest.get(0).isList() || !List.of("minimize", "maximize").contains(rest.get(0).symbol.toLowerCase(java.util.Locale.ROOT))) {
+            throw err(at, "expected '(:metric minimize EXPRESSION)' or '(:metric maximize EXPRESSION)', such as '(:metric minimize (total-cost))'");
+        }
+        SExpr x = rest.get(1);
+        NumericExpr e = !x.isList() && x.symbol.equalsIgnoreCase(PlanMetric.TOTAL_TIME) ? NumericExpr.Fluent.of(PlanMetric.TOTAL_TIME)
+                : !x.isList() && x.symbol.equalsIgnoreCase(PlanMetric.TOTAL_COST) ? NumericExpr.Fluent.of(PlanMetric.TOTAL_COST) : numericExpr(x);
+        for (NumericExpr.Fluent f : NumericParts.fluents(e)) {
+            for (String t : f.args()) if (t.startsWith("?")) throw err(x, "variable '" + t + "' in the metric: it must be ground");
+        }
+        return new PlanMetric(rest.get(0).symbol.equalsIgnoreCase("minimize"), e);
+    }
+
     /** A PDDL 2.1 numeric expression: a number, {@code (f args)}, {@code (+ a b ...)}, {@code (- a b)}, {@code (- a)}, {@code (* a b ...)}, {@code (/ a b)}. */
     private NumericExpr numericExpr(SExpr e) {
         if (!e.isList()) {
@@ -559,6 +580,7 @@ public final class PddlParser {
                     goal = formula(rest.get(0));
                 }
                 case ":metric" -> {
+                    metric(sec, rest); // checked here, so that a bad metric is an error at its place
                     StringBuilder sb = new StringBuilder();
                     for (SExpr r : rest) sb.append(sb.length() > 0 ? " " : "").append(r);
                     metric = sb.toString();
