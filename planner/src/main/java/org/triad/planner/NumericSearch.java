@@ -91,6 +91,15 @@ final class NumericSearch {
         Outcome outcome;
         int goal = -1;
         long expanded;
+        /** Steps left out because a value they compute is not a finite number, and the first of them. */
+        long faults;
+        int firstFault = -1;
+
+        String faultNote(NumericTask task) {
+            if (faults == 0) return "";
+            return "; " + faults + " step" + (faults == 1 ? " was" : "s were") + " left out because a value computed is not a finite number"
+                    + " (a division by zero or an overflow), the first " + task.ops.get(firstFault).label();
+        }
     }
 
     static SolveResult solve(Domain domain, Problem problem, Duration timeout) {
@@ -114,16 +123,20 @@ final class NumericSearch {
         Key init = new Key(initFacts, task.initValues, task.accumulator);
         int h0 = h.estimate(init.facts, init.values);
         if (h0 == NumericHeuristic.DEAD_END) {
-            return SolveResult.unsolvable("the goal is unreachable even when nothing is ever deleted and every fluent can take any value its actions reach",
-                    stats(groundMs, searchStart, 0, 1));
+            return SolveResult.unsolvable("the goal is unreachable even when nothing is ever deleted and every fluent can take any value its actions reach"
+                    + task.undefinedNote(), stats(groundMs, searchStart, 0, 1));
         }
         long[] evaluations = { 1 };
         Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
         long expanded = first.expanded;
         if (first.outcome == Outcome.EXHAUSTED) {
-            return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, expanded, evaluations[0]));
+            return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
         }
-        if (first.outcome != Outcome.FOUND) return SolveResult.timeout(stats(groundMs, searchStart, expanded, evaluations[0]));
+        if (first.outcome != Outcome.FOUND) {
+            SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
+            String note = task.undefinedNote() + first.faultNote(task);
+            return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
+        }
         List<Integer> best = eliminateRedundant(task, init, opsTo(first.nodes, first.goal));
         boolean cutShort = false;
         if (task.metric != null) {
@@ -131,9 +144,13 @@ final class NumericSearch {
             long budget = Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
             long limit = evaluations[0] + budget;
             boolean monotone = h.metricOnlyGrows();
-            for (int w : WEIGHTS) {
+            for (int k = 0; k < WEIGHTS.length; k++) {
+                int w = WEIGHTS[k];
                 if (evaluations[0] >= limit) break;
-                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone, EXPANSION_BUDGET, limit, deadline, evaluations);
+                // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
+                // must not starve the less greedy ones that can
+                long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
+                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone, EXPANSION_BUDGET, share, deadline, evaluations);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
@@ -205,7 +222,10 @@ final class NumericSearch {
                 NumericTask.Op op = task.ops.get(o);
                 if (!holds(op.pre(), n.state)) continue;
                 Key next = apply(op, n.state, task.accumulator);
-                if (next == null) continue;
+                if (next == null) {
+                    if (run.faults++ == 0) run.firstFault = o;
+                    continue;
+                }
                 double g = task.metric == null ? n.g + 1 : task.metricValue(next.values) - base;
                 Integer old = seen.get(next);
                 if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;

@@ -141,6 +141,27 @@ final class NumericTask {
     }
 
     private final boolean countsSteps;
+    /** Per fluent without a value, the actions whose instances read it (so never apply), with their numbers. */
+    private final Map<String, Map<String, Integer>> undefinedReads = new LinkedHashMap<>();
+
+    /**
+     * Why instances are missing, for a "no plan" answer: {@code (battery r2) has no value in :init (and no
+     * action assigns it), so 2 instances of 'drive' that read it never apply}; empty when none is.
+     */
+    String undefinedNote() {
+        if (undefinedReads.isEmpty()) return "";
+        List<String> parts = new ArrayList<>();
+        for (Map.Entry<String, Map<String, Integer>> e : undefinedReads.entrySet()) {
+            if (parts.size() == 3) {
+                parts.add("and " + (undefinedReads.size() - 3) + " more fluents");
+                break;
+            }
+            List<String> users = new ArrayList<>();
+            e.getValue().forEach((action, n) -> users.add(n + " instance" + (n == 1 ? "" : "s") + " of '" + action + "'"));
+            parts.add(e.getKey() + " has no value in :init (and no action assigns it), so " + String.join(" and ", users) + " that read it never apply");
+        }
+        return "; " + String.join("; ", parts);
+    }
 
     private void findAccumulators() {
         int n = fluentNames.size();
@@ -324,7 +345,8 @@ final class NumericTask {
             if (countsSteps) effects.add(new Effects(TRUE, new int[0], new int[0], List.of(new NumEffect("increase", fluent(PlanMetric.TOTAL_TIME), new Num(1)))));
             ops.add(new Op(a.name(), args, pre, effects));
         } catch (Undefined e) {
-            // reads a fluent that never has a value: never applicable
+            // reads a fluent that never has a value: never applicable (PDDL 2.1), said when no plan is found
+            undefinedReads.computeIfAbsent(e.getMessage(), k -> new LinkedHashMap<>()).merge(a.name(), 1, Integer::sum);
         }
     }
 

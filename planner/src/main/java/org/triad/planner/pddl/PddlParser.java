@@ -464,13 +464,7 @@ public final class PddlParser {
 
     /** An object name or variable (not a number, not a function term): the operand of object equality. */
     private static boolean isObjectTerm(SExpr e) {
-        if (e.isList()) return false;
-        try {
-            Double.parseDouble(e.symbol);
-            return false;
-        } catch (NumberFormatException ex) {
-            return true;
-        }
+        return !e.isList() && !isNumber(e.symbol);
     }
 
     /** {@code minimize|maximize EXPRESSION}; a bare {@code total-time} (as temporal problems write it) is the fluent. */
@@ -487,16 +481,26 @@ public final class PddlParser {
         return new PlanMetric(rest.get(0).symbol.equalsIgnoreCase("minimize"), e);
     }
 
+    private static final java.util.regex.Pattern NUMBER = java.util.regex.Pattern.compile("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
+
+    /** A decimal number as PDDL writes it (Java's parser would also take {@code 0x1p3}, {@code 1d} or {@code NaN}). */
+    private static boolean isNumber(String s) {
+        return NUMBER.matcher(s).matches();
+    }
+
     /** A PDDL 2.1 numeric expression: a number, {@code (f args)}, {@code (+ a b ...)}, {@code (- a b)}, {@code (- a)}, {@code (* a b ...)}, {@code (/ a b)}. */
     private NumericExpr numericExpr(SExpr e) {
         if (!e.isList()) {
-            double v;
-            try {
-                v = Double.parseDouble(e.symbol);
-            } catch (NumberFormatException ex) {
+            if (!isNumber(e.symbol)) {
+                if (List.of("nan", "inf", "infinity", "-inf", "-infinity").contains(e.symbol)) throw err(e, "'" + e.symbol + "' is not a finite number");
+                if (e.symbol.startsWith("?") || Character.isLetter(e.symbol.charAt(0))) {
+                    throw err(e, "'" + e.symbol + "' is " + (e.symbol.startsWith("?") ? "a variable, which stands for an object" : "an object")
+                            + ", not a number: numeric comparisons and effects need numbers or function terms such as (battery ?r)");
+                }
                 throw err(e, "expected a number or a function term such as (battery ?r), found '" + e.symbol + "'");
             }
-            if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
+            double v = Double.parseDouble(e.symbol);
+            if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number (too large for a double)");
             return new NumericExpr.Number(v);
         }
         if (e.items.isEmpty()) throw err(e, "empty numeric expression '()'");
@@ -510,7 +514,11 @@ public final class PddlParser {
                 throw err(e, "'" + head + "' takes " + (nary ? "two or more" : op == '-' ? "one or two" : "two") + " numeric expressions");
             }
             NumericExpr result = numericExpr(args.get(0));
-            for (SExpr a : args.subList(1, args.size())) result = new NumericExpr.Arithmetic(op, result, numericExpr(a));
+            for (SExpr a : args.subList(1, args.size())) {
+                NumericExpr right = numericExpr(a);
+                if (op == '/' && right instanceof NumericExpr.Number z && z.value() == 0) throw err(a, "division by zero: '(/ ... 0)'");
+                result = new NumericExpr.Arithmetic(op, result, right);
+            }
             return result;
         }
         if (head.startsWith("?") || head.startsWith(":")) throw err(e.items.get(0), "expected a function name, found '" + head + "'");
@@ -522,6 +530,7 @@ public final class PddlParser {
     private NumericTerm numeric(SExpr e) {
         if (!e.isList()) {
             try {
+                if (!isNumber(e.symbol)) throw new NumberFormatException(e.symbol);
                 double v = Double.parseDouble(e.symbol);
                 if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
                 return new NumericTerm.Constant(v);
