@@ -24,6 +24,16 @@ final class NumericHeuristic {
     /** The least positive {@link #opCost}: the price of a step a numeric condition still needs. */
     private final double cheapest;
     private final boolean metricOnlyGrows;
+    /**
+     * Per fluent: whether a smaller lower bound, or a larger upper bound, can make any condition true
+     * (a battery that only has to be at least the next road's length gains nothing from going lower).
+     * Growth in no such direction cannot reach the goal, so the graph has then stopped growing: without
+     * this a robot with too little charge to reach a dock had its estimate run to {@link #MAX_LAYERS}.
+     */
+    private final boolean[] lowMatters;
+    private final boolean[] highMatters;
+    /** Per operator: whether all its effects are unconditional and change no fluent the relaxation tracks. */
+    private final boolean[] pure;
 
     NumericHeuristic(NumericTask task) {
         this.task = task;
@@ -51,7 +61,145 @@ final class NumericHeuristic {
             if (opCost[o] > 0) least = Math.min(least, opCost[o]);
         }
         cheapest = least == Double.POSITIVE_INFINITY ? 0 : least;
+        int nv = task.fluentNames.size();
+        lowMatters = new boolean[nv];
+        highMatters = new boolean[nv];
+        for (int i = 0; i < nv; i++) {
+            lowThresholds.add(new ArrayList<>());
+            highThresholds.add(new ArrayList<>());
+        }
+        directions(task.goal);
+        for (NumericTask.Op op : task.ops) {
+            directions(op.pre());
+            for (NumericTask.Effects e : op.effects()) {
+                directions(e.when());
+                for (NumericTask.NumEffect n : e.numeric()) {
+                    // a value an effect adds or assigns: any of its bounds may matter
+                    sign(n.value(), 0, lowMatters, highMatters);
+                    if (n.kind().startsWith("scale")) lowMatters[n.fluent()] = highMatters[n.fluent()] = true;
+                }
+            }
+        }
+        pure = new boolean[task.ops.size()];
+        for (int o = 0; o < pure.length; o++) {
+            boolean p = true;
+            for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                if (e.when() != NumericTask.TRUE) p = false;
+                for (NumericTask.NumEffect n : e.numeric()) if (!task.accumulator[n.fluent()]) p = false;
+            }
+            pure[o] = p;
+        }
         metricOnlyGrows = grows;
+    }
+
+    /** Per fluent: the values at which a comparison of it alone flips, for its lower and its upper bound. */
+    private final List<List<Double>> lowThresholds = new ArrayList<>();
+    private final List<List<Double>> highThresholds = new ArrayList<>();
+
+    /**
+     * Whether the widening of fluent {@code i} can make a condition true: its first value, a bound that
+     * matters in general ({@link #lowMatters}), or one that crosses a threshold of a comparison of it alone.
+     */
+    private boolean matters(int i, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
+        if (Double.isNaN(lo[i])) return !Double.isNaN(nextLo[i]);
+        if (nextLo[i] < lo[i]) {
+            if (lowMatters[i]) return true;
+            for (double t : lowThresholds.get(i)) if (nextLo[i] <= t && t <= lo[i]) return true;
+        }
+        if (nextHi[i] > hi[i]) {
+            if (highMatters[i]) return true;
+            for (double t : highThresholds.get(i)) if (hi[i] <= t && t <= nextHi[i]) return true;
+        }
+        return false;
+    }
+
+    /** The one fluent a linear expression reads, -1 when it reads none, -2 when several or not linearly. */
+    private static int single(NumericTask.Expr e) {
+        if (e instanceof NumericTask.Num) return -1;
+        if (e instanceof NumericTask.Var v) return v.fluent();
+        if (e instanceof NumericTask.Neg n) return single(n.operand());
+        NumericTask.Bin b = (NumericTask.Bin) e;
+        int l = single(b.left());
+        int r = single(b.right());
+        if (l == -2 || r == -2) return -2;
+        if (b.op() == '*' && l >= 0 && r >= 0) return -2;
+        if (b.op() == '/' && r >= 0) return -2;
+        if (l >= 0 && r >= 0 && l != r) return -2;
+        return Math.max(l, r);
+    }
+
+    private void directions(NumericTask.Cond c) {
+        if (c instanceof NumericTask.All a) a.parts().forEach(this::directions);
+        else if (c instanceof NumericTask.Any a) a.parts().forEach(this::directions);
+        else if (c instanceof NumericTask.Cmp m && single(new NumericTask.Bin('-', m.left(), m.right())) >= 0) {
+            // one fluent x, linearly: d(x) = k x + c op 0 flips at x = -c / k; only crossing that matters
+            NumericTask.Expr d = new NumericTask.Bin('-', m.left(), m.right());
+            int f = single(d);
+            double[] at = new double[lowMatters.length];
+            double c0 = NumericTask.value(d, at);
+            at[f] = 1;
+            double k = NumericTask.value(d, at) - c0;
+            if (k == 0 || !Double.isFinite(k) || !Double.isFinite(c0)) {
+                lowMatters[f] = highMatters[f] = true;
+                return;
+            }
+            double t = -c0 / k;
+            int dir = switch (m.op()) {
+                case ">", ">=" -> k > 0 ? 1 : -1;
+                case "<", "<=" -> k > 0 ? -1 : 1;
+                default -> 0;
+            };
+            if (dir >= 0) highThresholds.get(f).add(t);
+            if (dir <= 0) lowThresholds.get(f).add(t);
+        } else if (c instanceof NumericTask.Cmp m) {
+            // left - right op 0: '>' and '>=' get easier as it grows, '<' and '<=' as it falls, '=' either way
+            int dir = switch (m.op()) {
+                case ">", ">=" -> 1;
+                case "<", "<=" -> -1;
+                default -> 0;
+            };
+            sign(m.left(), dir, lowMatters, highMatters);
+            sign(m.right(), -dir, lowMatters, highMatters);
+        }
+    }
+
+    /**
+     * Marks, for each fluent in {@code e}, which bound helps when {@code e} should grow ({@code dir} 1),
+     * fall (-1) or either (0); outside linear arithmetic both bounds count.
+     */
+    private static void sign(NumericTask.Expr e, int dir, boolean[] low, boolean[] high) {
+        if (e instanceof NumericTask.Var v) {
+            if (dir >= 0) high[v.fluent()] = true;
+            if (dir <= 0) low[v.fluent()] = true;
+        } else if (e instanceof NumericTask.Neg n) {
+            sign(n.operand(), -dir, low, high);
+        } else if (e instanceof NumericTask.Bin b) {
+            switch (b.op()) {
+                case '+' -> {
+                    sign(b.left(), dir, low, high);
+                    sign(b.right(), dir, low, high);
+                }
+                case '-' -> {
+                    sign(b.left(), dir, low, high);
+                    sign(b.right(), -dir, low, high);
+                }
+                case '*' -> {
+                    if (b.left() instanceof NumericTask.Num k) sign(b.right(), k.value() >= 0 ? dir : -dir, low, high);
+                    else if (b.right() instanceof NumericTask.Num k) sign(b.left(), k.value() >= 0 ? dir : -dir, low, high);
+                    else {
+                        sign(b.left(), 0, low, high);
+                        sign(b.right(), 0, low, high);
+                    }
+                }
+                default -> {
+                    if (b.right() instanceof NumericTask.Num k) sign(b.left(), k.value() >= 0 ? dir : -dir, low, high);
+                    else {
+                        sign(b.left(), 0, low, high);
+                        sign(b.right(), 0, low, high);
+                    }
+                }
+            }
+        }
     }
 
     /** Whether no step can make the metric smaller (so a partial plan as costly as a found one can be pruned). */
@@ -122,7 +270,7 @@ final class NumericHeuristic {
                 return sum;
             }
             boolean changed = costChanged || !nextFacts.equals(reached);
-            for (int i = 0; i < lo.length && !changed; i++) changed = nextLo[i] != lo[i] || nextHi[i] != hi[i];
+            for (int i = 0; i < lo.length && !changed; i++) changed = matters(i, lo, hi, nextLo, nextHi);
             if (!changed) return Double.POSITIVE_INFINITY;
             reached = nextFacts;
             lo = nextLo;
@@ -168,6 +316,7 @@ final class NumericHeuristic {
         double[] lo = values.clone();
         double[] hi = values.clone();
         boolean[] done = new boolean[goals.size()];
+        boolean[] fired = new boolean[pure.length];
         int open = goals.size();
         int sum = 0;
         boolean checkedOptimistically = false;
@@ -183,9 +332,16 @@ final class NumericHeuristic {
             BitSet nextFacts = (BitSet) reached.clone();
             double[] nextLo = lo.clone();
             double[] nextHi = hi.clone();
-            for (NumericTask.Op op : task.ops) {
-                if (!holds(op.pre(), reached, lo, hi)) continue;
-                for (NumericTask.Effects e : op.effects()) {
+            for (int o = 0; o < pure.length; o++) {
+                // the relaxation only grows: an operator applicable once stays so, and one that only adds
+                // facts has nothing more to give after its first layer
+                if (!fired[o]) {
+                    if (!holds(task.ops.get(o).pre(), reached, lo, hi)) continue;
+                    fired[o] = true;
+                } else if (pure[o]) {
+                    continue;
+                }
+                for (NumericTask.Effects e : task.ops.get(o).effects()) {
                     if (!holds(e.when(), reached, lo, hi)) continue;
                     for (int f : e.adds()) nextFacts.set(f);
                     for (NumericTask.NumEffect n : e.numeric()) if (!task.accumulator[n.fluent()]) widen(n, lo, hi, nextLo, nextHi);
@@ -193,7 +349,7 @@ final class NumericHeuristic {
             }
             boolean factsChanged = !nextFacts.equals(reached);
             boolean changed = factsChanged;
-            for (int i = 0; i < lo.length && !changed; i++) changed = nextLo[i] != lo[i] || nextHi[i] != hi[i];
+            for (int i = 0; i < lo.length && !changed; i++) changed = matters(i, lo, hi, nextLo, nextHi);
             if (!changed) return DEAD_END;
             if (!factsChanged && !checkedOptimistically) {
                 // only numbers still grow, perhaps forever: a goal that needs a fact no action can add is out of reach
@@ -245,7 +401,26 @@ final class NumericHeuristic {
 
     private static void widen(NumericTask.NumEffect n, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
         int f = n.fluent();
-        double[] v = interval(n.value(), lo, hi);
+        double[] v = n.value() instanceof NumericTask.Num k ? null : interval(n.value(), lo, hi);
+        if (n.value() instanceof NumericTask.Num k && !n.kind().equals("assign") && !Double.isNaN(lo[f])) {
+            // the common case (a constant step: distance tables fold to constants) without allocations
+            double x = k.value();
+            double a = lo[f], b = hi[f];
+            switch (n.kind()) {
+                case "increase" -> { a += x; b += x; }
+                case "decrease" -> { a -= x; b -= x; }
+                default -> {
+                    double[] c = n.kind().equals("scale-up") ? product(new double[] { a, b }, new double[] { x, x })
+                            : quotient(new double[] { a, b }, new double[] { x, x });
+                    a = c[0];
+                    b = c[1];
+                }
+            }
+            nextLo[f] = Double.isNaN(nextLo[f]) ? a : Math.min(nextLo[f], a);
+            nextHi[f] = Double.isNaN(nextHi[f]) ? b : Math.max(nextHi[f], b);
+            return;
+        }
+        if (v == null) v = interval(n.value(), lo, hi);
         if (v == null) return;
         double a;
         double b;

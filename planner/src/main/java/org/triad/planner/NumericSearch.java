@@ -34,11 +34,11 @@ final class NumericSearch {
     /** States expanded before giving up, whatever the clock says. */
     static final long EXPANSION_BUDGET = 2_000_000;
     /** Improving by the metric may evaluate this many times the states the first plan needed ... */
-    static final long IMPROVEMENT_FACTOR = 10;
+    static final long IMPROVEMENT_FACTOR = 4;
     /** ... at least this many ... */
     static final long IMPROVEMENT_MIN_EVALUATIONS = 20_000;
     /** ... and never more than this many. */
-    static final long IMPROVEMENT_MAX_EVALUATIONS = 200_000;
+    static final long IMPROVEMENT_MAX_EVALUATIONS = 100_000;
     private static final int[] WEIGHTS = { 5, 3, 2, 1 };
 
     private NumericSearch() { }

@@ -204,7 +204,8 @@ public final class NumericPlannerComparison {
         String metric = value.find() ? value.group(1) : "-";
         if (text.contains("Plan valid")) return new String[] { "valid", metric };
         // VAL's lexer takes a name that starts with a keyword (increase_z in drone) for the keyword
-        if (text.contains("Parser failed")) return new String[] { "VAL cannot read it", "-" };
+        // and it refuses some domains outright (sailing: "Problem in domain definition!")
+        if (text.contains("Parser failed") || text.contains("Problem in domain definition")) return new String[] { "VAL cannot read it", "-" };
         Matcher why = Pattern.compile("(?m)^(Plan failed.*|.*[Uu]nsatisfied.*|.*[Ee]rror.*)$").matcher(text);
         return new String[] { "INVALID" + (why.find() ? ": " + why.group(1).trim().replace('|', '/') : ""), "-" };
     }
