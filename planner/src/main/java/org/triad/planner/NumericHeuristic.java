@@ -245,8 +245,10 @@ final class NumericHeuristic {
             boolean costChanged = false;
             for (int o = 0; o < task.ops.size(); o++) {
                 NumericTask.Op op = task.ops.get(o);
-                if (!holds(op.pre(), reached, lo, hi)) continue;
-                if (opLayer[o] < 0) opLayer[o] = layer;
+                if (opLayer[o] < 0) {
+                    if (!holds(op.pre(), reached, lo, hi)) continue;
+                    opLayer[o] = layer; // applicable from now on: the relaxation only grows
+                }
                 double c = opCost[o] + factCost(op.pre(), fcost) + (numericHolds(op.pre(), values) ? 0 : cheapest * Math.max(1, opLayer[o]));
                 for (NumericTask.Effects e : op.effects()) {
                     if (!holds(e.when(), reached, lo, hi)) continue;
