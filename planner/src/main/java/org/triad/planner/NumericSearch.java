@@ -40,6 +40,10 @@ final class NumericSearch {
     /** ... and never more than this many. */
     static final long IMPROVEMENT_MAX_EVALUATIONS = 100_000;
     private static final int[] WEIGHTS = { 5, 3, 2, 1 };
+    /** The same for a problem without a metric, whose plan's length is improved. */
+    static final long LENGTH_FACTOR = 2;
+    static final long LENGTH_MIN_EVALUATIONS = 2_000;
+    static final long LENGTH_MAX_EVALUATIONS = 50_000;
 
     private NumericSearch() { }
 
@@ -139,11 +143,15 @@ final class NumericSearch {
         }
         List<Integer> best = eliminateRedundant(task, init, opsTo(first.nodes, first.goal));
         boolean cutShort = false;
-        if (task.metric != null) {
-            double bestCost = metricOf(task, init, best);
-            long budget = Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
+        {
+            // without a metric the plan's length is improved, on a smaller budget (a robot's goal without
+            // costs should not pay much for a few steps less)
+            boolean byLength = task.metric == null;
+            double bestCost = byLength ? best.size() : metricOf(task, init, best);
+            long budget = byLength ? Math.min(LENGTH_MAX_EVALUATIONS, Math.max(LENGTH_MIN_EVALUATIONS, LENGTH_FACTOR * evaluations[0]))
+                    : Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
             long limit = evaluations[0] + budget;
-            boolean monotone = h.metricOnlyGrows();
+            boolean monotone = byLength || h.metricOnlyGrows();
             for (int k = 0; k < WEIGHTS.length; k++) {
                 int w = WEIGHTS[k];
                 if (evaluations[0] >= limit) break;
@@ -158,7 +166,7 @@ final class NumericSearch {
                 }
                 if (r.outcome == Outcome.FOUND) {
                     List<Integer> plan = eliminateRedundant(task, init, opsTo(r.nodes, r.goal));
-                    double cost = metricOf(task, init, plan);
+                    double cost = byLength ? plan.size() : metricOf(task, init, plan);
                     if (cost < bestCost) {
                         bestCost = cost;
                         best = plan;
