@@ -98,17 +98,18 @@ final class NumericHeuristic {
 
     /**
      * Whether the widening of fluent {@code i} can make a condition true: its first value, a bound that
-     * matters in general ({@link #lowMatters}), or one that crosses a threshold of a comparison of it alone.
+     * matters in general ({@link #lowMatters}), or one that moves towards a threshold of a comparison of it
+     * alone that it has not yet passed (a threshold passed already gains nothing from going further).
      */
     private boolean matters(int i, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
         if (Double.isNaN(lo[i])) return !Double.isNaN(nextLo[i]);
         if (nextLo[i] < lo[i]) {
             if (lowMatters[i]) return true;
-            for (double t : lowThresholds.get(i)) if (nextLo[i] <= t && t <= lo[i]) return true;
+            for (double t : lowThresholds.get(i)) if (t <= lo[i]) return true; // a threshold still ahead, not only one crossed now
         }
         if (nextHi[i] > hi[i]) {
             if (highMatters[i]) return true;
-            for (double t : highThresholds.get(i)) if (hi[i] <= t && t <= nextHi[i]) return true;
+            for (double t : highThresholds.get(i)) if (t >= hi[i]) return true;
         }
         return false;
     }

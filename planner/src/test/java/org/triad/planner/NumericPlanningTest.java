@@ -128,4 +128,16 @@ class NumericPlanningTest {
                 new PddlPlan(List.of(PddlStep.of("drive", "r1", "lobby", "dock"))));
         assertEquals("step 1 (drive r1 lobby dock): division by zero in (/ 1 (- (battery r1) 30))", report.message());
     }
+
+    @Test
+    void aFluentRaisedOneStepAtATimeReachesAFarThreshold() {
+        // the relaxed graph must keep growing while a bound moves towards a threshold it has not reached,
+        // not only in the layer that crosses it (else the start looks like a dead end)
+        Domain d = PddlParser.parseDomain("""
+                (define (domain step) (:requirements :numeric-fluents) (:predicates (on))
+                  (:functions (x))
+                  (:action up :parameters () :precondition (on) :effect (increase (x) 1)))""", "step.pddl");
+        Problem p = PddlParser.parseProblem("(define (problem p) (:domain step) (:init (on) (= (x) 0)) (:goal (>= (x) 5)))", "p.pddl");
+        assertEquals(5, solve(d, p).length());
+    }
 }
