@@ -33,12 +33,25 @@ import org.triad.planner.pddl.TypedName;
  * property's old value is not named by the precondition, it becomes an extra action parameter.
  */
 public final class PddlTranslator {
+	/** The marker actions and predicates of a sequence of goals ({@link #translateSequence}). */
+	static final String REACHED = "triad-reached-";
+
 	/** The metric's accumulator: every action adds its cost. */
 	static final String TOTAL_COST = "total-cost";
 
 	private final AppSchema schema;
 	private final Quantities quantities;
 	private final boolean costed;
+
+	/** Whether the application has quantities, numbers the planner computes with (a battery, a load, a distance). */
+	public boolean plansQuantities() {
+		return quantities.any();
+	}
+
+	/** Whether a property is a quantity. */
+	public boolean isQuantity(String actor, String property) {
+		return quantities.isQuantity(actor, property);
+	}
 
 	public PddlTranslator(AppSchema schema) {
 		this.schema = schema;
@@ -104,6 +117,18 @@ public final class PddlTranslator {
 			return new GroundAction(a.actor(), a.name(), args);
 		}
 
+		/** The steps of a plan for a sequence of goals up to the marker of the first goal, read back. */
+		public Plan planUntilReached(List<String> pddlActions, List<List<String>> pddlArgs) {
+			List<GroundAction> steps = new ArrayList<>();
+			for (int i = 0; i < pddlActions.size(); i++) {
+				if (PddlNames.lower(pddlActions.get(i)).startsWith(REACHED)) {
+					break;
+				}
+				steps.add(action(pddlActions.get(i), pddlArgs.get(i)));
+			}
+			return new Plan(steps);
+		}
+
 		public Plan plan(List<String> pddlActions, List<List<String>> pddlArgs) {
 			List<GroundAction> steps = new ArrayList<>();
 			for (int i = 0; i < pddlActions.size(); i++) {
@@ -119,6 +144,27 @@ public final class PddlTranslator {
 	}
 
 	public Task translate(State state, Expr goalCondition, Map<String, Object> binding, String goalName) {
+		return translate(state, List.of(new Stage(goalCondition, binding)), goalName);
+	}
+
+	/** One goal of a sequence: its condition and the values of its parameters. */
+	public record Stage(Expr condition, Map<String, Object> binding) {
+	}
+
+	/**
+	 * Translates reaching the goals in order, each holding at some instant after the one before (a task's
+	 * remaining goals, planned as one lookahead): a marker action {@code triad-reached-k} may run once goal k
+	 * holds and goal k-1 was reached, and the problem's goal is the last marker. {@link Task#planUntilReached}
+	 * reads back the part of the plan that reaches the first goal.
+	 */
+	public Task translateSequence(State state, List<Stage> stages, String name) {
+		return translate(state, stages, name);
+	}
+
+	private Task translate(State state, List<Stage> stages, String goalName) {
+		if (stages.isEmpty()) {
+			throw new IllegalArgumentException("no goal to translate");
+		}
 		PddlNames names = new PddlNames();
 		Set<String> domainConstants = new LinkedHashSet<>();
 		List<Action> pddlActions = new ArrayList<>();
@@ -157,7 +203,24 @@ public final class PddlTranslator {
 			}
 			init.add(new Formula.Atom(PddlNames.predicate(atom.actor(), atom.property()), args));
 		}
-		Formula goal = new GroundTranslation(names, binding, requirements, order).formula(goalCondition);
+		Formula goal;
+		List<PredicateDecl> markers = new ArrayList<>();
+		if (stages.size() == 1) {
+			goal = new GroundTranslation(names, stages.get(0).binding(), requirements, order).formula(stages.get(0).condition());
+		} else {
+			for (int k = 1; k <= stages.size(); k++) {
+				Stage stage = stages.get(k - 1);
+				Formula reached = new GroundTranslation(names, stage.binding(), requirements, order).formula(stage.condition());
+				List<Formula> pre = new ArrayList<>();
+				if (k > 1) {
+					pre.add(Formula.Atom.of(REACHED + (k - 1)));
+				}
+				pre.add(reached);
+				markers.add(new PredicateDecl(REACHED + k, List.of()));
+				pddlActions.add(new Action(REACHED + k, List.of(), new Formula.And(pre), List.of(new PddlEffect.Add(Formula.Atom.of(REACHED + k)))));
+			}
+			goal = Formula.Atom.of(REACHED + stages.size());
+		}
 		if (order.used()) {
 			init.addAll(order.facts(names));
 		}
@@ -188,6 +251,7 @@ public final class PddlTranslator {
 		if (order.used()) {
 			predicates.addAll(order.predicates());
 		}
+		predicates.addAll(markers);
 		List<TypedName> constants = new ArrayList<>();
 		for (String c : domainConstants) {
 			constants.add(TypedName.of(c, PddlNames.type(names.objectsWithTypes().get(c))));
