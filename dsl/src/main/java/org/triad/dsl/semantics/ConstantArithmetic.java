@@ -4,7 +4,6 @@ import org.triad.dsl.triad.BinaryExpression;
 import org.triad.dsl.triad.DecimalLiteral;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.IntLiteral;
-import org.triad.dsl.typing.TriadType;
 import org.triad.dsl.typing.TriadTypeSystem;
 
 /**
@@ -18,8 +17,12 @@ public final class ConstantArithmetic {
 	}
 
 	/** What folding gave: a value, or why there is none (null when the expression is not constant). */
-	public record Folded(Double value, boolean divisionByZero, boolean overflow) {
-		static final Folded NOT_CONSTANT = new Folded(null, false, false);
+	public record Folded(Double value, boolean divisionByZero, boolean overflow, boolean integral) {
+		static final Folded NOT_CONSTANT = new Folded(null, false, false, false);
+
+		Folded(Double value, boolean divisionByZero, boolean overflow) {
+			this(value, divisionByZero, overflow, false);
+		}
 
 		public boolean isConstant() {
 			return value != null;
@@ -28,7 +31,7 @@ public final class ConstantArithmetic {
 
 	public static Folded fold(Expression e) {
 		if (e instanceof IntLiteral l) {
-			return new Folded((double) l.getValue(), false, false);
+			return new Folded((double) l.getValue(), false, false, true);
 		}
 		if (e instanceof DecimalLiteral l) {
 			return new Folded(l.getValue(), false, false);
@@ -43,7 +46,8 @@ public final class ConstantArithmetic {
 		}
 		double x = l.value();
 		double y = r.value();
-		boolean integral = TriadTypeSystem.typeOf(e).kind() == TriadType.Kind.INT;
+		// from the operands, not TriadTypeSystem.typeOf: that recurses, and folding every node of a long chain would be cubic
+		boolean integral = l.integral() && r.integral() && b.getOperator() != org.triad.dsl.triad.BinaryOperator.DIVIDE;
 		double v = switch (b.getOperator()) {
 			case PLUS -> x + y;
 			case MINUS -> x - y;
@@ -54,6 +58,6 @@ public final class ConstantArithmetic {
 			return new Folded(null, true, false);
 		}
 		boolean overflow = integral ? v > Integer.MAX_VALUE || v < Integer.MIN_VALUE : Double.isInfinite(v) || Double.isNaN(v);
-		return overflow ? new Folded(null, false, true) : new Folded(v, false, false);
+		return overflow ? new Folded(null, false, true) : new Folded(v, false, false, integral);
 	}
 }

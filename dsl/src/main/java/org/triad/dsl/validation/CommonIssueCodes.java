@@ -36,6 +36,11 @@ public final class CommonIssueCodes {
 	public static final String NOT_NUMERIC = "expr.not-numeric";
 	/** A Boolean property passed as the argument of a property: the planner passes objects and values, not conditions. */
 	public static final String CONDITION_AS_ARGUMENT = "plan.condition-as-argument";
+	/**
+	 * {@code b.weight}: an attribute of an object read in a condition. Conditions read properties of actors;
+	 * the finding says which world property to declare instead.
+	 */
+	public static final String ATTRIBUTE_READ = "expr.attribute-read";
 	/** A division by a divisor that is zero ({@code x / 0}, {@code x / (2 - 2)}). */
 	public static final String DIVISION_BY_ZERO = "expr.division-by-zero";
 	/** Arithmetic on literals whose result is not a finite number of its type (an int past 2147483647, a double past 1.8e308). */

@@ -120,7 +120,7 @@ public class TriadActorValidator extends AbstractTriadActorValidator {
 	 */
 	@Check
 	public void checkQuantities(Actor actor) {
-		org.triad.dsl.semantics.Quantities q = org.triad.dsl.semantics.Quantities.of(actor);
+		org.triad.dsl.semantics.Quantities q = quantities(actor);
 		Set<EObject> reported = new HashSet<>();
 		for (Action action : actor.getActions()) {
 			java.util.List<org.triad.dsl.triad.Expression> contexts = new java.util.ArrayList<>();

@@ -115,13 +115,26 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 		reportQuantityArguments(goal);
 	}
 
+	/**
+	 * The application's quantities, computed once per validation of a resource (they depend on every model of
+	 * the application, so computing them per element would make checking quadratic in the model's size).
+	 */
+	protected org.triad.dsl.semantics.Quantities quantities(EObject element) {
+		java.util.Map<Object, Object> context = getContext();
+		if (context == null) {
+			return org.triad.dsl.semantics.Quantities.of(element);
+		}
+		return (org.triad.dsl.semantics.Quantities) context.computeIfAbsent(org.triad.dsl.semantics.Quantities.class,
+				k -> org.triad.dsl.semantics.Quantities.of(element));
+	}
+
 	/** A quantity is a number the planner computes with (a numeric fluent), not an object a property can take. */
 	private void reportQuantityArguments(EObject root) {
 		List<PropertyCall> calls = EcoreUtil2.getAllContentsOfType(root, PropertyCall.class);
 		if (calls.stream().noneMatch(c -> !c.getArguments().isEmpty())) {
 			return;
 		}
-		org.triad.dsl.semantics.Quantities q = org.triad.dsl.semantics.Quantities.of(root);
+		org.triad.dsl.semantics.Quantities q = quantities(root);
 		for (PropertyCall call : calls) {
 			for (int i = 0; i < call.getArguments().size(); i++) {
 				if (call.getArguments().get(i) instanceof PropertyCall inner && inner.getProperty() != null && q.isQuantity(inner.getProperty())) {

@@ -193,7 +193,8 @@ public final class PddlTranslator {
 			}
 			if (quantities.isQuantity(atom.actor(), atom.property())) {
 				if (!(e.getValue() instanceof Number n) || !Double.isFinite(n.doubleValue())) {
-					throw new PddlTranslationException(atom + " is " + e.getValue() + " in the state: a quantity the planner computes with must be a finite number");
+					throw new PddlTranslationException(atom.actor() + "." + atom.property() + "(" + atom.args().stream().map(String::valueOf)
+							.collect(java.util.stream.Collectors.joining(", ")) + ") is " + e.getValue() + " in the state: a quantity the planner computes with must be a finite number");
 				}
 				numericInit.add(new Problem.NumericFact(PddlNames.predicate(atom.actor(), atom.property()), args, n.doubleValue()));
 				continue;
