@@ -131,13 +131,20 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 	/** A quantity is a number the planner computes with (a numeric fluent), not an object a property can take. */
 	private void reportQuantityArguments(EObject root) {
 		List<PropertyCall> calls = EcoreUtil2.getAllContentsOfType(root, PropertyCall.class);
-		if (calls.stream().noneMatch(c -> !c.getArguments().isEmpty())) {
+		if (calls.stream().allMatch(c -> c.getArguments().isEmpty())) {
 			return;
 		}
 		org.triad.dsl.semantics.Quantities q = quantities(root);
 		for (PropertyCall call : calls) {
+			if (call.getProperty() == null) {
+				continue;
+			}
 			for (int i = 0; i < call.getArguments().size(); i++) {
-				if (call.getArguments().get(i) instanceof PropertyCall inner && inner.getProperty() != null && q.isQuantity(inner.getProperty())) {
+				if (call.getArguments().get(i) instanceof BinaryExpression arithmetic && TriadTypeSystem.isArithmetic(arithmetic.getOperator())) {
+					error("'" + sourceText(arithmetic) + "' is computed by arithmetic and cannot be the argument of '" + call.getProperty().getName()
+							+ "': the planner passes objects and values as arguments; compare the number instead", call,
+							P.getPropertyCall_Arguments(), i, CommonIssueCodes.QUANTITY_AS_ARGUMENT);
+				} else if (call.getArguments().get(i) instanceof PropertyCall inner && inner.getProperty() != null && q.isQuantity(inner.getProperty())) {
 					error("'" + sourceText(inner) + "' is a quantity the planner computes with (a number that changes by arithmetic), and cannot be the argument of '"
 							+ call.getProperty().getName() + "'; compare it instead, e.g. '" + sourceText(inner) + " > 0'",
 							call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.QUANTITY_AS_ARGUMENT);

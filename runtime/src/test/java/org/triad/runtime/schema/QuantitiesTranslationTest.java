@@ -22,8 +22,8 @@ class QuantitiesTranslationTest {
 
 	private static final AppSchema SCHEMA = AppSchema.builder("Yard", "Bot", "World")
 			.property(new PropertySchema("Bot", "battery", List.of(), "double"))
-			.action(new ActionSchema("Bot", "drain", List.of(new Param("n", "int")), new Expr.Compare(Expr.Op.GT, BATTERY, new Expr.Lit(1)),
-					List.of(new Effect((Expr.Call) BATTERY, true, new Expr.Arith('/', BATTERY, new Expr.Arith('-', Expr.var("n"), Expr.var("n"))))),
+			.action(new ActionSchema("Bot", "drain", List.of(), new Expr.Compare(Expr.Op.GT, BATTERY, new Expr.Lit(1)),
+					List.of(new Effect((Expr.Call) BATTERY, true, new Expr.Arith('/', BATTERY, new Expr.Arith('-', BATTERY, BATTERY)))),
 					new Expr.Lit(2)))
 			.goal(new GoalSchema("Low", List.of(), new Expr.Compare(Expr.Op.LT, BATTERY, new Expr.Lit(5))))
 			.build();
@@ -41,8 +41,8 @@ class QuantitiesTranslationTest {
 	void aDivisionByZeroInTheDryWorldIsAModelFaultNamingTheExpression() {
 		State s = State.builder().value(Atom.of("Bot", "battery"), 10.0).build();
 		ModelEvaluationException e = assertThrows(ModelEvaluationException.class,
-				() -> new Transitions(SCHEMA).apply(new GroundAction("Bot", "drain", List.of(3)), s));
-		assertEquals("division by zero: Bot.battery() / (n - n)", e.getMessage());
+				() -> new Transitions(SCHEMA).apply(new GroundAction("Bot", "drain", List.of()), s));
+		assertEquals("division by zero: Bot.battery() / (Bot.battery() - Bot.battery())", e.getMessage());
 		ModelEvaluationException overflow = assertThrows(ModelEvaluationException.class,
 				() -> Evaluator.arithmetic(new Expr.Arith('*', BATTERY, BATTERY), 1e200, 1e200));
 		assertTrue(overflow.getMessage().startsWith("overflow: Bot.battery() * Bot.battery()"), overflow.getMessage());
