@@ -73,6 +73,15 @@ class DeepModelsTest {
 		assertTrue(app.diagnostics().size() < 3 * ExpressionLimits.MAX_NESTING, "findings: " + app.diagnostics().size());
 	}
 
+	/** Long sums (issue #22): typing, folding constants and finding quantities stay quadratic at most, not cubic. */
+	@Test
+	void longArithmeticChecksClean() throws IOException {
+		String quantities = String.join(" + ", java.util.Collections.nCopies(ExpressionLimits.MAX_DEPTH / 2, "Bot.charge()"));
+		String literals = String.join(" + ", java.util.Collections.nCopies(ExpressionLimits.MAX_DEPTH / 2, "1"));
+		LoadedApplication app = load(goal("Bot.holds(b) && " + quantities + " > 0.5 && Bot.charge() < " + literals));
+		assertEquals(List.of(), app.diagnostics());
+	}
+
 	@Test
 	void multiMegabyteFileChecksClean() throws IOException {
 		StringBuilder goals = new StringBuilder("domain Shop;\n");

@@ -70,7 +70,7 @@ public final class SchemaBuilder {
 					effects.add(new Effect((Expr.Call) expr(e.call()), e.holds(), e.value() == null ? null : expr(e.value())));
 				}
 				b.action(new ActionSchema(actor.getName(), a.getName(), params(a.getParameters()),
-						a.getPre() == null ? Expr.TRUE : expr(a.getPre()), effects));
+						a.getPre() == null ? Expr.TRUE : expr(a.getPre()), effects, a.getCost() == null ? null : expr(a.getCost())));
 			}
 		}
 		for (Goal g : app.getGoals()) {
@@ -115,12 +115,17 @@ public final class SchemaBuilder {
 				case LE -> new Expr.Compare(Expr.Op.LE, l, r);
 				case GT -> new Expr.Compare(Expr.Op.GT, l, r);
 				case GE -> new Expr.Compare(Expr.Op.GE, l, r);
+				case PLUS -> new Expr.Arith('+', l, r);
+				case MINUS -> new Expr.Arith('-', l, r);
+				case TIMES -> new Expr.Arith('*', l, r);
+				case DIVIDE -> new Expr.Arith('/', l, r);
 			};
 		}
 		if (e instanceof NotExpression n) {
 			return new Expr.Not(expr(n.getOperand()));
 		}
 		if (e instanceof PropertyCall c) {
+			// 'p()@pre' needs no mark of its own: the runtime evaluates every effect's value in the state before the action
 			Actor actor = c.getActor() != null ? c.getActor() : org.eclipse.xtext.EcoreUtil2.getContainerOfType(c, Actor.class);
 			return new Expr.Call(actor.getName(), c.getProperty().getName(), c.getArguments().stream().map(SchemaBuilder::expr).toList());
 		}

@@ -34,7 +34,7 @@ public class Planner extends PlannerTOP {
             return;
         }
         startActivity("plan", r,
-                () -> Objects.requireNonNull(backEnd.plan(r.goal(), message.state()), "the GoalPlanner returned no outcome"),
+                () -> Objects.requireNonNull(backEnd.plan(r.goal(), r.then(), message.state()), "the GoalPlanner returned no outcome"),
                 outcome -> plan.send(PlanResult.of(r, message.state(), outcome)));
     }
 }

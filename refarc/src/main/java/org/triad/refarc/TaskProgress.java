@@ -51,7 +51,7 @@ public final class TaskProgress {
     /** A new request for a plan of the current goal; it is the outstanding one from now on. */
     public PlanRequest planRequest() {
         outstanding = ++lastRequestId;
-        return new PlanRequest(outstanding, goal());
+        return new PlanRequest(outstanding, goal(), task.goals().subList(goalIndex + 1, task.goals().size()));
     }
 
     /** Whether {@code reply} answers the outstanding request. */

@@ -240,6 +240,15 @@ final class Corridor {
             return p.run((IsAt) goal, from);
         }
 
+        /** The rest of the task each planning was asked to keep reachable, in order. */
+        final List<String> lookaheads = Collections.synchronizedList(new ArrayList<>());
+
+        @Override
+        public PlanningOutcome plan(GoalInstance goal, List<GoalInstance> then, State from) throws Exception {
+            lookaheads.add(goal.describe() + " then " + then.stream().map(GoalInstance::describe).toList());
+            return plan(goal, from);
+        }
+
         int calls() {
             return fromLocations.size();
         }

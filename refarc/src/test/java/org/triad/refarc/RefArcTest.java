@@ -48,6 +48,15 @@ class RefArcTest {
                 "fetch c", "check robot.move(c, d)", "execute robot.move(c, d)"), world.log);
     }
 
+    /** Issue #22: the Planner gets the rest of the task, so that a goal's plan does not strand the robot. */
+    @Test
+    void eachGoalIsPlannedWithTheRestOfItsTask() {
+        ScriptedPlanner planner = new ScriptedPlanner();
+        RefArcRun r = run(new World("a"), planner, Task.goTo("b", "d", "c"));
+        assertEquals(RefArcRun.Outcome.COMPLETED, r.outcome());
+        assertEquals(List.of("IsAt(b) then [IsAt(d), IsAt(c)]", "IsAt(d) then [IsAt(c)]", "IsAt(c) then []"), planner.lookaheads);
+    }
+
     @Test
     void aGoalThatAlreadyHoldsNeedsNoPlanningAndNoActions() {
         World world = new World("a");

@@ -4,6 +4,7 @@ import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.diagnostics.DiagnosticMessage;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
@@ -61,6 +62,16 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 		if (target == P.getSituation()) {
 			return error(CommonIssueCodes.UNKNOWN_SITUATION, "unknown situation '" + name + "' (no 'state " + name + "' in this application)");
 		}
+		if (target == P.getEnumeration() && context.getContext() instanceof EnumLiteralRef read) {
+			String type = objectType(read, name);
+			if (type != null) {
+				String attribute = NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(read)).replaceAll("\\s+", "");
+				attribute = attribute.substring(attribute.indexOf('.') + 1);
+				return error(CommonIssueCodes.ATTRIBUTE_READ, "'" + name + "." + attribute + "' reads attribute '" + attribute + "' of object '" + name
+						+ "': conditions read properties of actors, not attributes of objects; declare a world property, e.g. 'property int "
+						+ attribute + "(" + type + " o);', state its values in situations and write 'World." + attribute + "(" + name + ")'");
+			}
+		}
 		if (target == P.getEnumeration()) {
 			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown enumeration '" + name + "'");
 		}
@@ -75,6 +86,29 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 			return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "unknown attribute '" + name + "'");
 		}
 		return error(CommonIssueCodes.UNKNOWN_NAME, "unknown " + target.getName() + " '" + name + "'");
+	}
+
+	/** The type of the parameter or situation object {@code name} where {@code e} is written, or null if there is none. */
+	private static String objectType(EObject e, String name) {
+		for (EObject c = e; c != null; c = c.eContainer()) {
+			if (c instanceof org.triad.dsl.triad.Parameterized owner) {
+				for (org.triad.dsl.triad.Parameter p : owner.getParameters()) {
+					if (name.equals(p.getName())) {
+						return org.triad.dsl.typing.TriadTypeSystem.typeOf(p.getType()).display();
+					}
+				}
+			}
+			if (c instanceof org.triad.dsl.triad.Situation s) {
+				for (org.triad.dsl.triad.ObjectDeclaration d : s.getDeclarations()) {
+					for (org.triad.dsl.triad.SituationObject o : d.getObjects()) {
+						if (name.equals(o.getName()) && d.getType() != null && !d.getType().eIsProxy()) {
+							return d.getType().getName();
+						}
+					}
+				}
+			}
+		}
+		return null;
 	}
 
 	private static boolean isUnqualified(String name) {

@@ -81,9 +81,10 @@ public final class Postconditions {
 				if (isStrictlyBoolean(call)) {
 					problems.add(new Problem(c, "write '" + name(call) + "(...)' or '!" + name(call)
 							+ "(...)' for a boolean property instead of comparing it"));
-				} else if (!isValue(b.getRight())) {
+				} else if (!isValue(b.getRight()) && !(isNumber(call) && isArithmeticValue(b.getRight()))) {
 					problems.add(new Problem(b.getRight(), "the value assigned to '" + name(call)
-							+ "' must be a parameter, a literal or an enumeration literal", true));
+							+ "' must be a parameter, a literal or an enumeration literal"
+							+ (isNumber(call) ? ", or arithmetic on the values before the action, e.g. '" + name(call) + "()@pre - 5'" : ""), true));
 				} else {
 					effects.add(new PostconditionEffect(call, true, b.getRight()));
 				}
@@ -97,6 +98,16 @@ public final class Postconditions {
 	public static boolean isValue(Expression e) {
 		return e instanceof ValueRef || e instanceof IntLiteral || e instanceof DecimalLiteral || e instanceof StringLiteral
 				|| e instanceof BooleanLiteral || e instanceof EnumLiteralRef;
+	}
+
+	/** A number computed from values before the action: arithmetic, or a property read ({@code p()@pre}). */
+	public static boolean isArithmeticValue(Expression e) {
+		return e instanceof PropertyCall || e instanceof BinaryExpression b && TriadTypeSystem.isArithmetic(b.getOperator());
+	}
+
+	private static boolean isNumber(PropertyCall call) {
+		TriadType t = TriadTypeSystem.typeOf(call);
+		return t.kind() == TriadType.Kind.INT || t.kind() == TriadType.Kind.DOUBLE;
 	}
 
 	/** Boolean, or unknown because the property did not resolve (reported once, by the linker). */

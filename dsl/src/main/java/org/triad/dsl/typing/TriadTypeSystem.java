@@ -7,6 +7,7 @@ import java.util.Set;
 
 import org.triad.dsl.triad.Attribute;
 import org.triad.dsl.triad.BinaryExpression;
+import org.triad.dsl.triad.BinaryOperator;
 import org.triad.dsl.triad.BooleanLiteral;
 import org.triad.dsl.triad.DecimalLiteral;
 import org.triad.dsl.triad.DomainClass;
@@ -46,6 +47,16 @@ public final class TriadTypeSystem {
 	}
 
 	public static TriadType typeOf(Expression e) {
+		if (e instanceof BinaryExpression b && isArithmetic(b.getOperator())) {
+			TriadType l = typeOf(b.getLeft());
+			TriadType r = typeOf(b.getRight());
+			if (!l.isNumeric() || !r.isNumeric()) {
+				return TriadType.UNKNOWN; // reported once, at the operator (expr.not-numeric)
+			}
+			// '/' divides numbers as they are measured (7 / 2 is 3.5), so it is a double
+			return l.kind() == TriadType.Kind.INT && r.kind() == TriadType.Kind.INT && b.getOperator() != BinaryOperator.DIVIDE
+					? TriadType.INT : TriadType.DOUBLE;
+		}
 		if (e instanceof BinaryExpression || e instanceof NotExpression || e instanceof BooleanLiteral) {
 			return TriadType.BOOLEAN;
 		}
@@ -74,6 +85,11 @@ public final class TriadTypeSystem {
 			}
 		}
 		return TriadType.UNKNOWN;
+	}
+
+	/** Whether an operator is arithmetic ({@code + - * /}) rather than a comparison or connective. */
+	public static boolean isArithmetic(BinaryOperator op) {
+		return op == BinaryOperator.PLUS || op == BinaryOperator.MINUS || op == BinaryOperator.TIMES || op == BinaryOperator.DIVIDE;
 	}
 
 	/** Whether a value of type {@code source} may be used where {@code target} is expected. */

@@ -13,6 +13,10 @@ public final class ActorIssueCodes {
 	public static final String EFFECT_VALUE = "actor.effect-value";
 	/** One postcondition that sets the same property twice, or both makes it hold and not hold. */
 	public static final String CONFLICTING_EFFECTS = "actor.conflicting-effects";
+	/** A property read in the value of an effect without {@code @pre}: after the action it would be the value being set. */
+	public static final String EFFECT_NEEDS_PRE = "actor.effect-needs-pre";
+	/** An action's {@code cost:} that is not a number. */
+	public static final String COST_NOT_NUMERIC = "actor.cost-not-numeric";
 	/** A second robot or a second world in one application. */
 	public static final String DUPLICATE_KIND = "actor.duplicate-kind";
 }

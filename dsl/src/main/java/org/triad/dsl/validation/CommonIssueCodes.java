@@ -32,10 +32,28 @@ public final class CommonIssueCodes {
 	public static final String CONDITION_NOT_BOOLEAN = "expr.condition-not-boolean";
 	/** {@code ==}/{@code !=} between values of incompatible types. */
 	public static final String INCOMPATIBLE_OPERANDS = "expr.incompatible-operands";
-	/** An ordering comparison on values that are not numbers. */
+	/** An ordering comparison ({@code < <= > >=}) or arithmetic ({@code + - * /}) on values that are not numbers. */
 	public static final String NOT_NUMERIC = "expr.not-numeric";
 	/** A Boolean property passed as the argument of a property: the planner passes objects and values, not conditions. */
 	public static final String CONDITION_AS_ARGUMENT = "plan.condition-as-argument";
+	/**
+	 * {@code b.weight}: an attribute of an object read in a condition. Conditions read properties of actors;
+	 * the finding says which world property to declare instead.
+	 */
+	public static final String ATTRIBUTE_READ = "expr.attribute-read";
+	/** A division by a divisor that is zero ({@code x / 0}, {@code x / (2 - 2)}). */
+	public static final String DIVISION_BY_ZERO = "expr.division-by-zero";
+	/** Arithmetic on literals whose result is not a finite number of its type (an int past 2147483647, a double past 1.8e308). */
+	public static final String OVERFLOW = "expr.overflow";
+	/** {@code p()@pre} (the value before the action) outside the value of a postcondition's effect. */
+	public static final String PRE_OUTSIDE_POSTCONDITION = "expr.pre-outside-post";
+	/**
+	 * A number parameter of an action combined with a quantity (a number the planner computes with, such
+	 * as a battery level): numeric planning (PDDL 2.1) chooses objects for parameters, never numbers.
+	 */
+	public static final String NUMBER_PARAMETER = "plan.number-parameter";
+	/** A quantity read inside the argument of another property: its value is a number the planner computes, not an object. */
+	public static final String QUANTITY_AS_ARGUMENT = "plan.quantity-as-argument";
 	/** A property call with the wrong number of arguments. */
 	public static final String ARGUMENT_COUNT = "expr.argument-count";
 	/** A property call argument whose type does not fit the parameter. */

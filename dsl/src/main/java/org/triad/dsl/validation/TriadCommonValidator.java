@@ -74,7 +74,101 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 							e, P.getBinaryExpression_Operator(), CommonIssueCodes.NOT_NUMERIC);
 				}
 			}
+			case PLUS, MINUS, TIMES, DIVIDE -> checkArithmetic(e, left, right);
 		}
+	}
+
+	private void checkArithmetic(BinaryExpression e, TriadType left, TriadType right) {
+		String op = e.getOperator().getLiteral();
+		for (Expression operand : List.of(e.getLeft(), e.getRight())) {
+			TriadType t = TriadTypeSystem.typeOf(operand);
+			if (!t.isNumeric()) {
+				error("'" + sourceText(operand) + "' is " + article(t.display()) + " " + t.display() + ": '" + op + "' "
+						+ ARITHMETIC_VERB.get(e.getOperator()) + " numbers (int or double)", e, P.getBinaryExpression_Operator(),
+						CommonIssueCodes.NOT_NUMERIC);
+				return;
+			}
+		}
+		org.triad.dsl.semantics.ConstantArithmetic.Folded folded = org.triad.dsl.semantics.ConstantArithmetic.fold(e);
+		org.triad.dsl.semantics.ConstantArithmetic.Folded divisor = org.triad.dsl.semantics.ConstantArithmetic.fold(e.getRight());
+		if (folded.divisionByZero() || e.getOperator() == org.triad.dsl.triad.BinaryOperator.DIVIDE && divisor.isConstant() && divisor.value() == 0) {
+			error("'" + sourceText(e) + "' divides by zero", e, P.getBinaryExpression_Right(), CommonIssueCodes.DIVISION_BY_ZERO);
+		} else if (folded.overflow()) {
+			error("'" + sourceText(e) + "' is too large for " + article(TriadTypeSystem.typeOf(e).display()) + " "
+					+ TriadTypeSystem.typeOf(e).display() + (TriadTypeSystem.typeOf(e).kind() == TriadType.Kind.INT
+							? " (at most 2147483647; write a decimal such as 3000000000.0 for a double)" : ""),
+					e, P.getBinaryExpression_Operator(), CommonIssueCodes.OVERFLOW);
+		}
+	}
+
+	private static final java.util.Map<org.triad.dsl.triad.BinaryOperator, String> ARITHMETIC_VERB = java.util.Map.of(
+			org.triad.dsl.triad.BinaryOperator.PLUS, "adds", org.triad.dsl.triad.BinaryOperator.MINUS, "subtracts",
+			org.triad.dsl.triad.BinaryOperator.TIMES, "multiplies", org.triad.dsl.triad.BinaryOperator.DIVIDE, "divides");
+
+	@Check
+	public void checkQuantityArguments(Actor actor) {
+		reportQuantityArguments(actor);
+	}
+
+	@Check
+	public void checkQuantityArguments(Goal goal) {
+		reportQuantityArguments(goal);
+	}
+
+	/**
+	 * The application's quantities, computed once per validation of a resource (they depend on every model of
+	 * the application, so computing them per element would make checking quadratic in the model's size).
+	 */
+	protected org.triad.dsl.semantics.Quantities quantities(EObject element) {
+		java.util.Map<Object, Object> context = getContext();
+		if (context == null) {
+			return org.triad.dsl.semantics.Quantities.of(element);
+		}
+		return (org.triad.dsl.semantics.Quantities) context.computeIfAbsent(org.triad.dsl.semantics.Quantities.class,
+				k -> org.triad.dsl.semantics.Quantities.of(element));
+	}
+
+	/** A quantity is a number the planner computes with (a numeric fluent), not an object a property can take. */
+	private void reportQuantityArguments(EObject root) {
+		List<PropertyCall> calls = EcoreUtil2.getAllContentsOfType(root, PropertyCall.class);
+		if (calls.stream().allMatch(c -> c.getArguments().isEmpty())) {
+			return;
+		}
+		org.triad.dsl.semantics.Quantities q = quantities(root);
+		for (PropertyCall call : calls) {
+			if (call.getProperty() == null) {
+				continue;
+			}
+			for (int i = 0; i < call.getArguments().size(); i++) {
+				if (call.getArguments().get(i) instanceof BinaryExpression arithmetic && TriadTypeSystem.isArithmetic(arithmetic.getOperator())) {
+					error("'" + sourceText(arithmetic) + "' is computed by arithmetic and cannot be the argument of '" + call.getProperty().getName()
+							+ "': the planner passes objects and values as arguments; compare the number instead", call,
+							P.getPropertyCall_Arguments(), i, CommonIssueCodes.QUANTITY_AS_ARGUMENT);
+				} else if (call.getArguments().get(i) instanceof PropertyCall inner && inner.getProperty() != null && q.isQuantity(inner.getProperty())) {
+					error("'" + sourceText(inner) + "' is a quantity the planner computes with (a number that changes by arithmetic), and cannot be the argument of '"
+							+ call.getProperty().getName() + "'; compare it instead, e.g. '" + sourceText(inner) + " > 0'",
+							call, P.getPropertyCall_Arguments(), i, CommonIssueCodes.QUANTITY_AS_ARGUMENT);
+				}
+			}
+		}
+	}
+
+	/** {@code p()@pre} reads the value before an action: only the value of a postcondition's effect has a "before". */
+	@Check
+	public void checkPre(PropertyCall call) {
+		if (!call.isPre()) {
+			return;
+		}
+		Action action = EcoreUtil2.getContainerOfType(call, Action.class);
+		if (action != null && action.getPost() != null) {
+			for (org.triad.dsl.semantics.PostconditionEffect effect : Postconditions.analyse(action.getPost()).effects()) {
+				if (effect.value() != null && (effect.value() == call || EcoreUtil2.isAncestor(effect.value(), call))) {
+					return;
+				}
+			}
+		}
+		error("'" + sourceText(call) + "' is the value before the action: '@pre' belongs in the value a postcondition sets, e.g. 'battery() == battery()@pre - 5'; elsewhere write '"
+				+ sourceText(call).replace("@pre", "") + "'", call, P.getPropertyCall_Pre(), CommonIssueCodes.PRE_OUTSIDE_POSTCONDITION);
 	}
 
 	/** An assignment effect {@code f(args) == v} of a postcondition, whose value's type the actor rules check. */

@@ -123,8 +123,10 @@ public class TriadStateValidator extends AbstractTriadStateValidator {
 				}
 			}
 			if (value != null) {
-				if (!Postconditions.isValue(value)) {
-					error("the value of a fact is an object of the state or a literal", fact, P.getBinaryExpression_Right(),
+				org.triad.dsl.semantics.ConstantArithmetic.Folded folded = org.triad.dsl.semantics.ConstantArithmetic.fold(value);
+				boolean arithmetic = folded.isConstant() || folded.divisionByZero() || folded.overflow(); // the last two: expr.division-by-zero, expr.overflow
+				if (!Postconditions.isValue(value) && !arithmetic) {
+					error("the value of a fact is an object of the state, a literal, or arithmetic on literals", fact, P.getBinaryExpression_Right(),
 							StateIssueCodes.FACT_ARGUMENT);
 					continue;
 				}

@@ -101,7 +101,8 @@ class SchemaTemplate {
 
 	def String action(ActionSchema a, Imports im) '''new «im.ref("org.triad.runtime.schema.ActionSchema")»(«JavaLiterals.string(a.actor)», «JavaLiterals.string(a.name)», «params(a.params, im)»,
 		«expr(a.pre, im)»,
-		«im.ref("java.util.List")».of(«a.effects.map[effect(im)].join(', ')»))'''
+		«im.ref("java.util.List")».of(«a.effects.map[effect(im)].join(', ')»),
+		«IF a.cost === null»null«ELSE»«expr(a.cost, im)»«ENDIF»)'''
 
 	def String effect(Effect e, Imports im) '''new «im.ref("org.triad.runtime.schema.Effect")»(«expr(e.call, im)», «e.holds», «IF e.value === null»null«ELSE»«expr(e.value, im)»«ENDIF»)'''
 
@@ -121,6 +122,8 @@ class SchemaTemplate {
 	def dispatch String expr(Expr.Not e, Imports im) '''new «exprType(im)».Not(«expr(e.operand, im)»)'''
 
 	def dispatch String expr(Expr.Compare e, Imports im) '''new «exprType(im)».Compare(«exprType(im)».Op.«e.op.name», «expr(e.left, im)», «expr(e.right, im)»)'''
+
+	def dispatch String expr(Expr.Arith e, Imports im) '''new «exprType(im)».Arith('«e.op»', «expr(e.left, im)», «expr(e.right, im)»)'''
 
 	def dispatch String expr(Expr.Call e, Imports im) '''new «exprType(im)».Call(«JavaLiterals.string(e.actor)», «JavaLiterals.string(e.property)», «im.ref("java.util.List")».of(«e.args.map[expr(im)].join(', ')»))'''
 

@@ -16,7 +16,16 @@ public final class SchemaGoalPlanner implements GoalPlanner {
 
 	@Override
 	public PlanningOutcome plan(GoalInstance goal, State from) {
-		GoalSolver.Outcome outcome = planner.plan(goal.name(), goal.args(), from);
+		return outcome(planner.plan(goal.name(), goal.args(), from));
+	}
+
+	/** The goal planned with the rest of its task as a lookahead ({@link GoalSolver#plan(GoalInstance, java.util.List, State)}). */
+	@Override
+	public PlanningOutcome plan(GoalInstance goal, java.util.List<GoalInstance> then, State from) {
+		return outcome(planner.plan(goal, then, from));
+	}
+
+	private static PlanningOutcome outcome(GoalSolver.Outcome outcome) {
 		return outcome.planned() ? new PlanningOutcome.Planned(outcome.plan()) : new PlanningOutcome.Failed(outcome.failure());
 	}
 }

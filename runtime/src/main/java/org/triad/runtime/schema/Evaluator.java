@@ -42,6 +42,9 @@ public final class Evaluator {
 		if (e instanceof Expr.Compare c) {
 			return compare(c, state, binding);
 		}
+		if (e instanceof Expr.Arith a) {
+			return arithmetic(a, eval(a.left(), state, binding), eval(a.right(), state, binding));
+		}
 		if (e instanceof Expr.Call c) {
 			Atom atom = atom(c, state, binding);
 			boolean isBoolean = schema.property(c.actor(), c.property()).map(PropertySchema::isBoolean)
@@ -59,6 +62,44 @@ public final class Evaluator {
 		}
 		Expr.EnumLit l = (Expr.EnumLit) e;
 		return new EnumValue(l.enumeration(), l.literal());
+	}
+
+	/**
+	 * {@code + - *} on two ints stay an int while the result fits; otherwise, and for {@code /}, a double.
+	 * A division by zero, a result past the range of double, or an operand without a value is a model fault.
+	 */
+	static Object arithmetic(Expr.Arith a, Object l, Object r) {
+		if (!(l instanceof Number x) || !(r instanceof Number y)) {
+			throw new ModelEvaluationException("'" + a.op() + "' needs numbers: " + Exprs.show(a) + " reads "
+					+ (l instanceof Number ? r : l) + (l == null || r == null ? " (a property without a value)" : ""));
+		}
+		if (a.op() == '/' && y.doubleValue() == 0) {
+			throw new ModelEvaluationException("division by zero: " + Exprs.show(a));
+		}
+		if (a.op() != '/' && isIntegral(x) && isIntegral(y)) {
+			long v = switch (a.op()) {
+				case '+' -> x.longValue() + y.longValue();
+				case '-' -> x.longValue() - y.longValue();
+				default -> x.longValue() * y.longValue();
+			};
+			if (v >= Integer.MIN_VALUE && v <= Integer.MAX_VALUE) {
+				return (int) v;
+			}
+		}
+		double v = switch (a.op()) {
+			case '+' -> x.doubleValue() + y.doubleValue();
+			case '-' -> x.doubleValue() - y.doubleValue();
+			case '*' -> x.doubleValue() * y.doubleValue();
+			default -> x.doubleValue() / y.doubleValue();
+		};
+		if (!Double.isFinite(v)) {
+			throw new ModelEvaluationException("overflow: " + Exprs.show(a) + " is " + v);
+		}
+		return v;
+	}
+
+	private static boolean isIntegral(Number n) {
+		return n instanceof Integer || n instanceof Long || n instanceof Short || n instanceof Byte;
 	}
 
 	/** The atom a call denotes in a state, its arguments evaluated. */

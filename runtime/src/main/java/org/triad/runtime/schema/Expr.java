@@ -34,6 +34,15 @@ public sealed interface Expr {
 		}
 	}
 
+	/** Arithmetic on numbers: {@code op} is one of {@code + - * /}; {@code /} divides as doubles do. */
+	record Arith(char op, Expr left, Expr right) implements Expr {
+		public Arith {
+			if ("+-*/".indexOf(op) < 0) {
+				throw new IllegalArgumentException("not an arithmetic operator: " + op);
+			}
+		}
+	}
+
 	/** A property of an actor applied to arguments. */
 	record Call(String actor, String property, List<Expr> args) implements Expr {
 		public Call {

@@ -23,6 +23,9 @@ public final class Exprs {
 		if (e instanceof Expr.Compare c) {
 			return show(c.left()) + " " + c.op().symbol + " " + show(c.right());
 		}
+		if (e instanceof Expr.Arith a) {
+			return arithOperand(a.left(), a, false) + " " + a.op() + " " + arithOperand(a.right(), a, true);
+		}
 		if (e instanceof Expr.Call c) {
 			return c.actor() + "." + c.property() + "(" + c.args().stream().map(Exprs::show).collect(Collectors.joining(", ")) + ")";
 		}
@@ -34,6 +37,15 @@ public final class Exprs {
 		}
 		Expr.EnumLit l = (Expr.EnumLit) e;
 		return l.enumeration() + "." + l.literal();
+	}
+
+	private static String arithOperand(Expr inner, Expr.Arith outer, boolean right) {
+		boolean needs = inner instanceof Expr.Arith a && (rank(a.op()) < rank(outer.op()) || right && rank(a.op()) == rank(outer.op()));
+		return needs ? "(" + show(inner) + ")" : show(inner);
+	}
+
+	private static int rank(char op) {
+		return op == '+' || op == '-' ? 1 : 2;
 	}
 
 	private static String paren(Expr inner, Expr outer) {

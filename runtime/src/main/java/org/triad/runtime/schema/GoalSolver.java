@@ -1,9 +1,11 @@
 package org.triad.runtime.schema;
 
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
+import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
 import org.triad.planner.PddlStep;
@@ -73,6 +75,90 @@ public final class GoalSolver {
 		} catch (RuntimeException e) {
 			return new Outcome(null, "planning failed: " + e);
 		}
+	}
+
+	/**
+	 * Plans {@code goal} so that the goals {@code then} (the rest of its task) stay reachable from where its
+	 * plan ends: a task does not strand its robot. The goal's own plan is kept when the rest can be planned,
+	 * goal by goal, from the state it ends in (what the paper's Controller will do); otherwise the goal and
+	 * the rest are planned as one lookahead and only the part that reaches {@code goal} is returned, to be
+	 * executed before the next goal is planned again from the observed state. A task that cannot be
+	 * completed at all fails here, before the robot moves, naming the goal that cannot be reached and the
+	 * quantities where it fails. Applications without quantities (numbers the planner computes with) are
+	 * planned goal by goal as before: nothing there is used up by reaching a goal.
+	 */
+	public Outcome plan(GoalInstance goal, List<? extends GoalInstance> then, State from) {
+		Outcome first = plan(goal.name(), goal.args(), from);
+		if (!translator.plansQuantities()) {
+			return first;
+		}
+		if (!first.planned()) {
+			return new Outcome(null, goal.describe() + " unreachable: " + quantitiesIn(from) + "(" + first.failure() + ")");
+		}
+		if (then.isEmpty()) {
+			return first;
+		}
+		try {
+			String stranded = strandedBy(first.plan(), goal, then, from);
+			if (stranded == null) {
+				return first;
+			}
+			List<PddlTranslator.Stage> stages = new ArrayList<>();
+			List<GoalInstance> all = new ArrayList<>();
+			all.add(goal);
+			all.addAll(then);
+			for (GoalInstance g : all) {
+				ModelGoal m = new ModelGoal(schema, g.name(), g.args());
+				stages.add(new PddlTranslator.Stage(m.schema().condition(), m.binding()));
+			}
+			PddlTranslator.Task task = translator.translateSequence(from, stages, goal.name() + "-and-" + then.size() + "-more");
+			SolveResult result = planner.solve(task.domain(), task.problem(), timeout);
+			if (result.isSolved()) {
+				List<PddlStep> steps = result.plan().steps();
+				return new Outcome(task.planUntilReached(steps.stream().map(PddlStep::name).toList(), steps.stream().map(PddlStep::args).toList()), null);
+			}
+			return new Outcome(null, stranded);
+		} catch (PddlTranslationException | ModelEvaluationException e) {
+			return new Outcome(null, e.getMessage());
+		} catch (RuntimeException e) {
+			return new Outcome(null, "planning failed: " + e);
+		}
+	}
+
+	/** Why the rest of the task cannot be reached, goal by goal, after {@code plan}; null when it can. */
+	private String strandedBy(Plan plan, GoalInstance goal, List<? extends GoalInstance> then, State from) {
+		Transitions transitions = new Transitions(schema);
+		State state = from;
+		for (var a : plan.actions()) {
+			state = transitions.apply(a, state);
+		}
+		GoalInstance previous = goal;
+		for (GoalInstance next : then) {
+			ModelGoal m = new ModelGoal(schema, next.name(), next.args());
+			if (!m.isSatisfiedIn(state)) {
+				Outcome o = plan(next.name(), next.args(), state);
+				if (!o.planned()) {
+					return next.describe() + " unreachable: " + quantitiesIn(state) + "after " + previous.describe() + " (" + o.failure() + ")";
+				}
+				for (var a : o.plan().actions()) {
+					state = transitions.apply(a, state);
+				}
+			}
+			previous = next;
+		}
+		return null;
+	}
+
+	/** The values of the quantities without arguments (a battery, a load) in a state, as the models name them. */
+	private String quantitiesIn(State state) {
+		StringBuilder b = new StringBuilder();
+		for (var e : state.values().entrySet()) {
+			var atom = e.getKey();
+			if (atom.args().isEmpty() && translator.isQuantity(atom.actor(), atom.property())) {
+				b.append(atom.actor()).append('.').append(atom.property()).append("() is ").append(e.getValue()).append(' ');
+			}
+		}
+		return b.toString();
 	}
 
 	public PddlTranslator translator() {

@@ -15,6 +15,8 @@ import org.triad.runtime.app.State;
 import org.triad.planner.pddl.Action;
 import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.Formula;
+import org.triad.planner.pddl.NumericExpr;
+import org.triad.planner.pddl.NumericTerm;
 import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.PddlWriter;
 import org.triad.planner.pddl.PredicateDecl;
@@ -31,10 +33,30 @@ import org.triad.planner.pddl.TypedName;
  * property's old value is not named by the precondition, it becomes an extra action parameter.
  */
 public final class PddlTranslator {
+	/** The marker actions and predicates of a sequence of goals ({@link #translateSequence}). */
+	static final String REACHED = "triad-reached-";
+
+	/** The metric's accumulator: every action adds its cost. */
+	static final String TOTAL_COST = "total-cost";
+
 	private final AppSchema schema;
+	private final Quantities quantities;
+	private final boolean costed;
+
+	/** Whether the application has quantities, numbers the planner computes with (a battery, a load, a distance). */
+	public boolean plansQuantities() {
+		return quantities.any();
+	}
+
+	/** Whether a property is a quantity. */
+	public boolean isQuantity(String actor, String property) {
+		return quantities.isQuantity(actor, property);
+	}
 
 	public PddlTranslator(AppSchema schema) {
 		this.schema = schema;
+		this.quantities = new Quantities(schema);
+		this.costed = schema.actions().stream().anyMatch(a -> a.cost() != null);
 	}
 
 	/** A translated planning task, with what is needed to read plans back. */
@@ -95,6 +117,18 @@ public final class PddlTranslator {
 			return new GroundAction(a.actor(), a.name(), args);
 		}
 
+		/** The steps of a plan for a sequence of goals up to the marker of the first goal, read back. */
+		public Plan planUntilReached(List<String> pddlActions, List<List<String>> pddlArgs) {
+			List<GroundAction> steps = new ArrayList<>();
+			for (int i = 0; i < pddlActions.size(); i++) {
+				if (PddlNames.lower(pddlActions.get(i)).startsWith(REACHED)) {
+					break;
+				}
+				steps.add(action(pddlActions.get(i), pddlArgs.get(i)));
+			}
+			return new Plan(steps);
+		}
+
 		public Plan plan(List<String> pddlActions, List<List<String>> pddlArgs) {
 			List<GroundAction> steps = new ArrayList<>();
 			for (int i = 0; i < pddlActions.size(); i++) {
@@ -110,6 +144,27 @@ public final class PddlTranslator {
 	}
 
 	public Task translate(State state, Expr goalCondition, Map<String, Object> binding, String goalName) {
+		return translate(state, List.of(new Stage(goalCondition, binding)), goalName);
+	}
+
+	/** One goal of a sequence: its condition and the values of its parameters. */
+	public record Stage(Expr condition, Map<String, Object> binding) {
+	}
+
+	/**
+	 * Translates reaching the goals in order, each holding at some instant after the one before (a task's
+	 * remaining goals, planned as one lookahead): a marker action {@code triad-reached-k} may run once goal k
+	 * holds and goal k-1 was reached, and the problem's goal is the last marker. {@link Task#planUntilReached}
+	 * reads back the part of the plan that reaches the first goal.
+	 */
+	public Task translateSequence(State state, List<Stage> stages, String name) {
+		return translate(state, stages, name);
+	}
+
+	private Task translate(State state, List<Stage> stages, String goalName) {
+		if (stages.isEmpty()) {
+			throw new IllegalArgumentException("no goal to translate");
+		}
 		PddlNames names = new PddlNames();
 		Set<String> domainConstants = new LinkedHashSet<>();
 		List<Action> pddlActions = new ArrayList<>();
@@ -125,6 +180,7 @@ public final class PddlTranslator {
 			names.value(o, o.typeName());
 		}
 		List<Formula.Atom> init = new ArrayList<>();
+		List<Problem.NumericFact> numericInit = new ArrayList<>();
 		for (Map.Entry<Atom, Object> e : state.values().entrySet()) {
 			Atom atom = e.getKey();
 			PropertySchema p = schema.property(atom.actor(), atom.property()).orElse(null);
@@ -135,12 +191,37 @@ public final class PddlTranslator {
 			for (int i = 0; i < atom.args().size(); i++) {
 				args.add(names.value(atom.args().get(i), p.params().get(i).type()));
 			}
+			if (quantities.isQuantity(atom.actor(), atom.property())) {
+				if (!(e.getValue() instanceof Number n) || !Double.isFinite(n.doubleValue())) {
+					throw new PddlTranslationException(atom.actor() + "." + atom.property() + "(" + atom.args().stream().map(String::valueOf)
+							.collect(java.util.stream.Collectors.joining(", ")) + ") is " + e.getValue() + " in the state: a quantity the planner computes with must be a finite number");
+				}
+				numericInit.add(new Problem.NumericFact(PddlNames.predicate(atom.actor(), atom.property()), args, n.doubleValue()));
+				continue;
+			}
 			if (!p.isBoolean()) {
 				args.add(names.value(e.getValue(), p.type()));
 			}
 			init.add(new Formula.Atom(PddlNames.predicate(atom.actor(), atom.property()), args));
 		}
-		Formula goal = new GroundTranslation(names, binding, requirements, order).formula(goalCondition);
+		Formula goal;
+		List<PredicateDecl> markers = new ArrayList<>();
+		if (stages.size() == 1) {
+			goal = new GroundTranslation(names, stages.get(0).binding(), requirements, order).formula(stages.get(0).condition());
+		} else {
+			for (int k = 1; k <= stages.size(); k++) {
+				Stage stage = stages.get(k - 1);
+				Formula reached = new GroundTranslation(names, stage.binding(), requirements, order).formula(stage.condition());
+				List<Formula> pre = new ArrayList<>();
+				if (k > 1) {
+					pre.add(Formula.Atom.of(REACHED + (k - 1)));
+				}
+				pre.add(reached);
+				markers.add(new PredicateDecl(REACHED + k, List.of()));
+				pddlActions.add(new Action(REACHED + k, List.of(), new Formula.And(pre), List.of(new PddlEffect.Add(Formula.Atom.of(REACHED + k)))));
+			}
+			goal = Formula.Atom.of(REACHED + stages.size());
+		}
 		if (order.used()) {
 			init.addAll(order.facts(names));
 		}
@@ -153,10 +234,15 @@ public final class PddlTranslator {
 			types.add(TypedName.of(PddlNames.type(used), "object"));
 		}
 		List<PredicateDecl> predicates = new ArrayList<>();
+		List<PredicateDecl> functions = new ArrayList<>();
 		for (PropertySchema p : schema.properties()) {
 			List<TypedName> params = new ArrayList<>();
 			for (Param param : p.params()) {
 				params.add(TypedName.of(PddlNames.variable(param.name()), PddlNames.type(param.type())));
+			}
+			if (quantities.isQuantity(p.actor(), p.name())) {
+				functions.add(new PredicateDecl(PddlNames.predicate(p.actor(), p.name()), params));
+				continue;
 			}
 			if (!p.isBoolean()) {
 				params.add(TypedName.of("?value", PddlNames.type(p.type())));
@@ -166,6 +252,7 @@ public final class PddlTranslator {
 		if (order.used()) {
 			predicates.addAll(order.predicates());
 		}
+		predicates.addAll(markers);
 		List<TypedName> constants = new ArrayList<>();
 		for (String c : domainConstants) {
 			constants.add(TypedName.of(c, PddlNames.type(names.objectsWithTypes().get(c))));
@@ -177,9 +264,18 @@ public final class PddlTranslator {
 			}
 		}
 		String domainName = PddlNames.lower(schema.name() == null ? "application" : schema.name()).replaceAll("[^a-z0-9-]", "-");
-		Domain domain = new Domain(domainName, List.copyOf(requirements), types, constants, predicates, List.of(), pddlActions);
-		Problem problem = new Problem(PddlNames.lower(goalName).replaceAll("[^a-z0-9-]", "-"), domainName, objects, init, List.of(), goal,
-				null);
+		String metric = null;
+		if (costed) {
+			functions.add(new PredicateDecl(TOTAL_COST, List.of()));
+			numericInit.add(new Problem.NumericFact(TOTAL_COST, List.of(), 0));
+			metric = "minimize (" + TOTAL_COST + ")";
+		}
+		if (!functions.isEmpty()) {
+			requirements.add(":fluents"); // what Metric-FF reads (it does not know ':numeric-fluents'); VAL and Triad's engine read both
+		}
+		Domain domain = new Domain(domainName, List.copyOf(requirements), types, constants, predicates, functions, pddlActions);
+		Problem problem = new Problem(PddlNames.lower(goalName).replaceAll("[^a-z0-9-]", "-"), domainName, objects, init, numericInit, goal,
+				metric);
 		return new Task(domain, problem, names, actions);
 	}
 
@@ -231,6 +327,9 @@ public final class PddlTranslator {
 				return atom(c, null);
 			}
 			if (e instanceof Expr.Compare c) {
+				if (isNumericComparison(c)) {
+					return numericComparison(c);
+				}
 				if (c.op() == Expr.Op.EQ || c.op() == Expr.Op.NE) {
 					Formula eq = equality(c.left(), c.right());
 					if (c.op() == Expr.Op.NE) {
@@ -293,8 +392,56 @@ public final class PddlTranslator {
 			return new Formula.Equals(term(e), term(new Expr.Lit(Boolean.TRUE)));
 		}
 
+		/** A non-Boolean property read as a value (an argument of its predicate); quantities are numeric fluents instead. */
 		boolean isFunction(Expr e) {
-			return e instanceof Expr.Call c && !property(c).isBoolean();
+			return e instanceof Expr.Call c && !property(c).isBoolean() && !quantities.isQuantity(c);
+		}
+
+		/** A comparison the planner computes: one side is arithmetic or reads a quantity. */
+		boolean isNumericComparison(Expr.Compare c) {
+			return quantities.isNumericTerm(c.left()) || quantities.isNumericTerm(c.right());
+		}
+
+		Formula numericComparison(Expr.Compare c) {
+			requirements.add(":fluents");
+			NumericExpr l = numeric(c.left());
+			NumericExpr r = numeric(c.right());
+			return switch (c.op()) {
+				case EQ -> new Formula.Compare("=", l, r);
+				case NE -> {
+					requirements.add(":negative-preconditions");
+					yield new Formula.Not(new Formula.Compare("=", l, r));
+				}
+				case LT -> new Formula.Compare("<", l, r);
+				case LE -> new Formula.Compare("<=", l, r);
+				case GT -> new Formula.Compare(">", l, r);
+				case GE -> new Formula.Compare(">=", l, r);
+			};
+		}
+
+		/** A number the planner computes with: a literal, a quantity, arithmetic on them, or (in a goal) a bound number. */
+		NumericExpr numeric(Expr e) {
+			if (e instanceof Expr.Arith a) {
+				return new NumericExpr.Arithmetic(a.op(), numeric(a.left()), numeric(a.right()));
+			}
+			if (e instanceof Expr.Call c && quantities.isQuantity(c)) {
+				List<String> args = new ArrayList<>();
+				for (Expr arg : c.args()) {
+					args.add(term(arg));
+				}
+				return new NumericExpr.Fluent(PddlNames.predicate(c.actor(), c.property()), args);
+			}
+			Object v = number(e);
+			if (v instanceof Number n && Double.isFinite(n.doubleValue())) {
+				return new NumericExpr.Number(n.doubleValue());
+			}
+			throw new PddlTranslationException(Exprs.show(e) + " cannot be computed with by the planner: a quantity is compared or combined with"
+					+ " literals, bound goal arguments and other quantities only" + (v == null ? "" : " (it is " + v + ")"));
+		}
+
+		/** The number an operand stands for before planning (a literal, or a bound goal argument), or null. */
+		Object number(Expr e) {
+			return e instanceof Expr.Lit l ? l.value() : null;
 		}
 
 		PropertySchema property(Expr.Call c) {
@@ -344,7 +491,9 @@ public final class PddlTranslator {
 			}
 			List<PddlEffect> effects = new ArrayList<>();
 			for (Effect e : action.effects()) {
-				if (e.isAssignment()) {
+				if (e.isAssignment() && quantities.isQuantity(e.call())) {
+					effects.add(numericEffect(e));
+				} else if (e.isAssignment()) {
 					String value = term(e.value());
 					String old = currentValue(e.call());
 					if (!old.equals(value)) {
@@ -355,10 +504,41 @@ public final class PddlTranslator {
 					effects.add(e.holds() ? new PddlEffect.Add(atom(e.call(), null)) : new PddlEffect.Delete(atom(e.call(), null)));
 				}
 			}
+			if (action.cost() != null) {
+				effects.add(cost(numeric(action.cost())));
+			}
 			List<Formula> allPre = new ArrayList<>(readPre);
 			allPre.addAll(pre);
 			List<TypedName> parameters = params.stream().map(p -> TypedName.of(p, paramTypes.get(p))).toList();
 			return new Action(PddlNames.action(action.actor(), action.name()), parameters, new Formula.And(allPre), effects);
+		}
+
+		/**
+		 * {@code f == f@pre + x} is {@code (increase f x)}, {@code f == f@pre - x} {@code (decrease f x)}, as
+		 * Metric-FF's numeric relaxed planning graph reads them best; any other value {@code (assign f v)}.
+		 */
+		private PddlEffect numericEffect(Effect e) {
+			requirements.add(":fluents");
+			NumericExpr.Fluent target = (NumericExpr.Fluent) numeric(e.call());
+			NumericExpr value = numeric(e.value());
+			if (value instanceof NumericExpr.Arithmetic a && (a.op() == '+' || a.op() == '-') && a.left().equals(target)) {
+				return new PddlEffect.NumericEffect(a.op() == '+' ? "increase" : "decrease", target, a.right());
+			}
+			if (value instanceof NumericExpr.Arithmetic a && a.op() == '+' && a.right().equals(target)) {
+				return new PddlEffect.NumericEffect("increase", target, a.left());
+			}
+			return new PddlEffect.NumericEffect("assign", target, value);
+		}
+
+		/** The action's cost added to the metric: a number or one fluent as PDDL's action costs write it, else any expression. */
+		private PddlEffect cost(NumericExpr amount) {
+			if (amount instanceof NumericExpr.Number n) {
+				return new PddlEffect.Increase(TOTAL_COST, new NumericTerm.Constant(n.value()));
+			}
+			if (amount instanceof NumericExpr.Fluent f) {
+				return new PddlEffect.Increase(TOTAL_COST, new NumericTerm.Function(f.name(), f.args()));
+			}
+			return new PddlEffect.NumericEffect("increase", NumericExpr.Fluent.of(TOTAL_COST), amount);
 		}
 
 		/** The term for the value a function call has before the action, binding a fresh parameter if needed. */
@@ -514,6 +694,11 @@ public final class PddlTranslator {
 			Object r = value(c.right());
 			boolean holds = l instanceof Number a && r instanceof Number b && NumberOrder.holds(c.op(), a.doubleValue(), b.doubleValue());
 			return holds ? new Formula.And(List.of()) : new Formula.Or(List.of());
+		}
+
+		@Override
+		Object number(Expr e) {
+			return value(e);
 		}
 
 		private Object value(Expr e) {
