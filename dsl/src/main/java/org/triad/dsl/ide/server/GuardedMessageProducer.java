@@ -40,7 +40,7 @@ import com.google.gson.stream.JsonToken;
  * <ul>
  * <li>content longer than {@link #MAX_CONTENT_BYTES}, nested deeper than {@link #MAX_DEPTH}, or not
  * JSON-RPC is refused with an error answer to its request (its {@code id} read leniently off the
- * text), or, for a notification, one logged line;</li>
+ * text), or, for a notification, one line in the log (level INFO: the client's fault, not the server's);</li>
  * <li>a request without the {@code params} its method requires ({@code "params": null}) is refused
  * with "invalid params", as is one whose parameters lack a field the protocol requires;</li>
  * <li>anything else goes on to the server.</li>
@@ -156,7 +156,7 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 		}
 		if (length < 0) {
 			// without a length the content cannot be told from the next message's headers: it is read as headers
-			LOG.warning("ignored a message without a Content-Length header: " + lengthProblem);
+			LOG.info("ignored a message without a Content-Length header: " + lengthProblem);
 			return new Frame(null, charset, null);
 		}
 		if (length > MAX_CONTENT_BYTES) {
@@ -214,10 +214,10 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 		try {
 			message = json.parseMessage(new String(content, charset));
 		} catch (MessageIssueException e) {
-			issues.handle(e.getRpcMessage(), e.getIssues());
+			reject(e.getRpcMessage(), e.getIssues());
 			return;
 		} catch (RuntimeException | StackOverflowError e) {
-			refuse(content, ResponseErrorCode.ParseError, "the message is not a JSON-RPC message: " + e.getMessage());
+			refuse(content, ResponseErrorCode.ParseError, "the message is not a JSON-RPC message: " + reason(e));
 			return;
 		}
 		if (message == null) {
@@ -226,14 +226,27 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 		}
 		String missing = missingParams(message);
 		if (missing != null) {
-			issues.handle(message, List.of(new MessageIssue(missing, ResponseErrorCode.InvalidParams.getValue())));
+			reject(message, List.of(new MessageIssue(missing, ResponseErrorCode.InvalidParams.getValue())));
 			return;
 		}
 		try {
 			validated.consume(message);
 		} catch (MessageIssueException e) {
-			issues.handle(e.getRpcMessage(), e.getIssues());
+			reject(e.getRpcMessage(), e.getIssues());
 		}
+	}
+
+	/**
+	 * A request is answered with the first issue; anything else (a notification, a response) has nobody to
+	 * answer and is one line in the log, where LSP4J would log a warning with a stack trace.
+	 */
+	private void reject(Message message, List<MessageIssue> found) {
+		if (message instanceof RequestMessage) {
+			issues.handle(message, found);
+			return;
+		}
+		String what = message instanceof NotificationMessage n ? "notification '" + n.getMethod() + "'" : "message";
+		LOG.info("ignored a " + what + ": " + (found.isEmpty() ? "" : found.get(0).getText()));
 	}
 
 	/** Why a request or notification of a known method lacks the parameters its method takes, or null. */
@@ -266,7 +279,7 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 	private void refuse(byte[] content, ResponseErrorCode code, String why) {
 		RequestMessage request = leniently(content);
 		if (request == null) {
-			LOG.warning("ignored a message that has no id to answer to: " + why);
+			LOG.info("ignored a message that has no id to answer to: " + why);
 			return;
 		}
 		issues.handle(request, List.of(new MessageIssue(why, code.getValue())));
@@ -340,6 +353,20 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 			}
 		}
 		return deepest;
+	}
+
+	/** What went wrong, in the words of its innermost cause, on one line (no exception class names). */
+	private static String reason(Throwable e) {
+		if (e instanceof StackOverflowError) {
+			return "it nests too deep to read";
+		}
+		Throwable t = e;
+		while (t.getCause() != null && t.getCause() != t) {
+			t = t.getCause();
+		}
+		String message = t.getMessage() == null ? "unreadable" : t.getMessage();
+		int end = message.indexOf('\n');
+		return end < 0 ? message : message.substring(0, end);
 	}
 
 	private static String abbreviate(String s) {

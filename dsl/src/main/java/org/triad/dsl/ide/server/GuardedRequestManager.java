@@ -37,8 +37,12 @@ import com.google.inject.Inject;
 public class GuardedRequestManager extends RequestManager {
 	/** How long a read request may take: far above what any request on a model takes, far below an editor's patience. */
 	public static final Duration REQUEST_BOUND = Duration.ofSeconds(Long.getLong("triad.lsp.requestSeconds", 60));
-	/** How long a change waits for the reads it cancelled before it goes ahead. */
-	public static final Duration WRITE_WAIT = Duration.ofSeconds(2);
+	/**
+	 * How long a change waits for the reads it cancelled before it goes ahead: long enough that a read that
+	 * honours its cancel indicator has stopped (even on a loaded machine) before the change touches the
+	 * models it reads, short enough that one that does not cannot hold up every later request for minutes.
+	 */
+	public static final Duration WRITE_WAIT = Duration.ofSeconds(20);
 
 	private static final ScheduledExecutorService DEADLINES = Executors.newSingleThreadScheduledExecutor(r -> {
 		Thread t = new Thread(r, "triad-lsp-request-deadlines");
