@@ -242,7 +242,9 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 	 */
 	private void reject(Message message, List<MessageIssue> found) {
 		if (message instanceof RequestMessage) {
-			issues.handle(message, found);
+			// the cause's words, not the cause: LSP4J would send the exception itself (class names, trace) as the error's data
+			issues.handle(message, found.stream().map(i -> new MessageIssue(
+					i.getCause() == null ? i.getText() : i.getText() + " " + reason(i.getCause()), i.getIssueCode())).toList());
 			return;
 		}
 		String what = message instanceof NotificationMessage n ? "notification '" + n.getMethod() + "'" : "message";
