@@ -58,6 +58,8 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 
 	private static final Logger LOG = Logger.getLogger(GuardedMessageProducer.class.getName());
 	private static final String CONTENT_LENGTH = "content-length";
+	/** A method name as the protocol writes them: only such a name is quoted in the log. */
+	private static final java.util.regex.Pattern METHOD_NAME = java.util.regex.Pattern.compile("[A-Za-z$][A-Za-z0-9/$_.-]{0,79}");
 
 	private final InputStream input;
 	private final MessageJsonHandler json;
@@ -156,7 +158,7 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 		}
 		if (length < 0) {
 			// without a length the content cannot be told from the next message's headers: it is read as headers
-			LOG.info("ignored a message without a Content-Length header: " + lengthProblem);
+			LOG.info("ignored a message without a readable Content-Length header");
 			return new Frame(null, charset, null);
 		}
 		if (length > MAX_CONTENT_BYTES) {
@@ -247,8 +249,9 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 					i.getCause() == null ? i.getText() : i.getText() + " " + reason(i.getCause()), i.getIssueCode())).toList());
 			return;
 		}
-		String what = message instanceof NotificationMessage n ? "notification '" + n.getMethod() + "'" : "message";
-		LOG.info("ignored a " + what + ": " + (found.isEmpty() ? "" : found.get(0).getText()));
+		String method = message instanceof NotificationMessage n ? n.getMethod() : null;
+		String what = method != null && METHOD_NAME.matcher(method).matches() ? "notification '" + method + "'" : "message";
+		LOG.info("ignored a " + what + " the server cannot read (" + (found.isEmpty() ? "" : found.get(0).getIssueCode()) + ")");
 	}
 
 	/** Why a request or notification of a known method lacks the parameters its method takes, or null. */
@@ -281,7 +284,8 @@ final class GuardedMessageProducer implements MessageProducer, Closeable {
 	private void refuse(byte[] content, ResponseErrorCode code, String why) {
 		RequestMessage request = leniently(content);
 		if (request == null) {
-			LOG.info("ignored a message that has no id to answer to: " + why);
+			// the log line names the code only: the reason quotes the client's text, which has no place in a log
+			LOG.info("ignored a message that has no id to answer to (" + code + ")");
 			return;
 		}
 		issues.handle(request, List.of(new MessageIssue(why, code.getValue())));
