@@ -16,6 +16,7 @@ import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 import org.eclipse.lsp4j.TextDocumentItem;
 import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
+import org.eclipse.lsp4j.WorkspaceSymbolParams;
 import org.junit.jupiter.api.AfterAll;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
@@ -62,6 +63,35 @@ class LanguageServerFuzzTest {
 			problems.addAll(s.takeProblems());
 		}
 		assertEquals(List.of(), problems);
+	}
+
+	/**
+	 * The server's reading of messages ({@code GuardedMessageProducer}): the input, whatever it is, arrives
+	 * as the content of one message (framed by its length); the server answers it or refuses it, logs no
+	 * error, and answers the next request: the stream stays in step. Inputs naming {@code exit},
+	 * {@code shutdown} or {@code initialize} are skipped, since they end or restart this in-JVM server.
+	 * Seeds: {@code LanguageServerFuzzTestInputs/rawMessage/}.
+	 */
+	@FuzzTest(maxDuration = "10m")
+	void rawMessage(byte[] input) throws Exception {
+		String text = new String(input, StandardCharsets.ISO_8859_1);
+		if (text.contains("exit") || text.contains("shutdown") || text.contains("initialize")) {
+			return;
+		}
+		LanguageServerSession s = session();
+		s.sendRaw(input);
+		s.answer("workspace/symbol after the raw message", s.server.getWorkspaceService().symbol(new WorkspaceSymbolParams("")));
+		// the answer to a raw request reaches this test's LSP4J client, which sent no such request and logs it as
+		// unmatched: that is the answer arriving, a problem only when it is an internal error
+		List<String> problems = s.takeProblems().stream().filter(p -> !isAnswerToRawRequest(p)).toList();
+		assertEquals(List.of(), problems);
+	}
+
+	/** The client's log line (or its copy on stderr) for an answer to the raw request, unless an internal error. */
+	private static boolean isAnswerToRawRequest(String problem) {
+		boolean unmatched = problem.startsWith("logged: Unmatched response message")
+				|| problem.startsWith("stderr: ") && problem.contains("Unmatched response message") && !problem.contains("\tat ");
+		return unmatched && !problem.contains("-32603");
 	}
 
 	/** Where the cursor is: the start, the middle of the text, its end. */

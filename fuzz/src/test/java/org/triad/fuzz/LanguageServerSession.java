@@ -64,6 +64,7 @@ final class LanguageServerSession implements AutoCloseable {
 	private final Future<Void> serverListening;
 	private final Future<Void> clientListening;
 	private final List<String> problems = new ArrayList<>();
+	private final WholeMessages clientOut;
 	private final ByteArrayOutputStream stderr = new ByteArrayOutputStream();
 	private final PrintStream originalErr = System.err;
 	private final ErrorAppender log4j = new ErrorAppender();
@@ -79,7 +80,7 @@ final class LanguageServerSession implements AutoCloseable {
 		java.util.logging.Logger.getLogger("").addHandler(jul);
 
 		PipedInputStream serverIn = new PipedInputStream(1 << 20);
-		PipedOutputStream clientOut = new PipedOutputStream(serverIn);
+		clientOut = new WholeMessages(new PipedOutputStream(serverIn));
 		PipedInputStream clientIn = new PipedInputStream(1 << 20);
 		PipedOutputStream serverOut = new PipedOutputStream(clientIn);
 		LanguageServerImpl impl = Guice.createInjector(new TriadServerModule()).getInstance(LanguageServerImpl.class);
@@ -95,6 +96,56 @@ final class LanguageServerSession implements AutoCloseable {
 		init.setCapabilities(new ClientCapabilities());
 		initialized = server.initialize(init).get(TIMEOUT_S, TimeUnit.SECONDS);
 		server.initialized(new InitializedParams());
+	}
+
+	/**
+	 * Sends {@code content} to the server as one message, framed by its length, whatever it is: what a
+	 * broken or hostile client could send.
+	 */
+	void sendRaw(byte[] content) throws IOException {
+		clientOut.write(("Content-Length: " + content.length + "\r\n\r\n").getBytes(StandardCharsets.US_ASCII));
+		clientOut.write(content);
+		clientOut.flush();
+	}
+
+	/**
+	 * The client's stream to the server, passing on what one thread wrote at its flush, in one piece: LSP4J
+	 * writes a message's header and content with two writes and then flushes, so a raw message sent meanwhile
+	 * from another thread could otherwise land between them.
+	 */
+	private static final class WholeMessages extends java.io.OutputStream {
+		private final java.io.OutputStream out;
+		private final ThreadLocal<ByteArrayOutputStream> pending = ThreadLocal.withInitial(ByteArrayOutputStream::new);
+
+		WholeMessages(java.io.OutputStream out) {
+			this.out = out;
+		}
+
+		@Override
+		public void write(int b) {
+			pending.get().write(b);
+		}
+
+		@Override
+		public void write(byte[] b, int off, int len) {
+			pending.get().write(b, off, len);
+		}
+
+		@Override
+		public void flush() throws IOException {
+			ByteArrayOutputStream p = pending.get();
+			synchronized (out) {
+				p.writeTo(out);
+				out.flush();
+			}
+			p.reset();
+		}
+
+		@Override
+		public void close() throws IOException {
+			flush();
+			out.close();
+		}
 	}
 
 	static String uri(Path p) {

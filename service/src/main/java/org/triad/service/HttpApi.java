@@ -45,6 +45,11 @@ final class HttpApi {
     private final ObjectMapper json = RequestLimits.mapper();
     private final EventStreams events = new EventStreams(System.err::println);
     private final Consumer<LiveEvent> eventListener = events::publish;
+
+    /** The live event stream's clients (tests publish through them as the fleet does). */
+    EventStreams events() {
+        return events;
+    }
     private final Javalin app;
     private final HttpsSettings https;
     private volatile String listenHost;

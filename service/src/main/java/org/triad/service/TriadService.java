@@ -247,6 +247,11 @@ public final class TriadService implements AutoCloseable {
         return objects;
     }
 
+    /** The live event stream's clients (tests publish through them as the fleet does). */
+    EventStreams events() {
+        return http.events();
+    }
+
     public int port() {
         return port;
     }

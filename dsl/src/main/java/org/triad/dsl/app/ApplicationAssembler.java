@@ -31,6 +31,7 @@ import org.triad.dsl.triad.StateModel;
 import org.triad.dsl.triad.TaskModel;
 import org.triad.dsl.triad.TriadFactory;
 import org.triad.dsl.validation.CommonIssueCodes;
+import org.triad.dsl.validation.FileIssueCodes;
 
 import com.google.inject.Injector;
 
@@ -56,6 +57,14 @@ import com.google.inject.Injector;
  * location.
  */
 public final class ApplicationAssembler {
+	/**
+	 * The largest model file read, in bytes (2 MiB; the hospital's largest model has a few KB). Loading
+	 * holds a model's syntax tree, node model and links in memory, a few hundred bytes per byte of
+	 * text (cli/BENCHMARK.md, "Model size"), so this bounds what one file can cost; a larger file is
+	 * refused with {@link FileIssueCodes#TOO_LARGE} at {@code path:1:1} before any of it is read.
+	 */
+	public static final long MAX_MODEL_FILE_BYTES = 2L << 20;
+
 	private ApplicationAssembler() {
 	}
 
@@ -75,6 +84,19 @@ public final class ApplicationAssembler {
 		List<Path> files = modelFiles(dir);
 		Injector injector = TriadLanguages.anyInjector();
 		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
+		List<ModelDiagnostic> tooLarge = tooLarge(files);
+		for (Path library : libraries) {
+			if (!Files.isRegularFile(library)) {
+				tooLarge.addAll(tooLarge(modelFiles(library.toAbsolutePath().normalize())));
+			}
+		}
+		if (!tooLarge.isEmpty()) {
+			// nothing is read: the other files' findings would only be the missing file's consequences
+			Application nothing = assemble(List.of());
+			nothing.setName(dir.getFileName() == null ? "application" : dir.getFileName().toString());
+			Collections.sort(tooLarge);
+			return new LoadedApplication(dir, resourceSet, nothing, List.copyOf(tooLarge));
+		}
 		List<ModelDiagnostic> diagnostics = new ArrayList<>();
 		List<Resource> resources = new ArrayList<>();
 		Set<String> shadowing = new HashSet<>(relativePaths(dir, files));
@@ -168,6 +190,24 @@ public final class ApplicationAssembler {
 			}
 		}
 		return ApplicationStructure.of(parts).violations();
+	}
+
+	/** A {@link FileIssueCodes#TOO_LARGE} error for each file over {@link #MAX_MODEL_FILE_BYTES}. */
+	private static List<ModelDiagnostic> tooLarge(List<Path> files) {
+		List<ModelDiagnostic> result = new ArrayList<>();
+		for (Path file : files) {
+			long size;
+			try {
+				size = Files.size(file);
+			} catch (IOException e) {
+				continue; // the load reports a file it cannot read
+			}
+			if (size > MAX_MODEL_FILE_BYTES) {
+				result.add(new ModelDiagnostic(file, 1, 1, ModelDiagnostic.Severity.ERROR, FileIssueCodes.TOO_LARGE,
+						"the file has " + size + " bytes; Triad reads model files of at most " + MAX_MODEL_FILE_BYTES + " bytes (2 MiB)"));
+			}
+		}
+		return result;
 	}
 
 	private static List<String> relativePaths(Path dir, List<Path> files) {

@@ -1,7 +1,7 @@
 package org.triad.vda5050.security;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -90,12 +90,12 @@ class SecuredBrokerTest {
         assertThrows(MqttException.class, () -> attacker("tcp://127.0.0.1:" + port, null, null, null));
         // TLS trusting the CA, no client certificate, anonymous
         assertThrows(MqttException.class, () -> attacker("ssl://127.0.0.1:" + port, trustOnly(), null, null));
-        // a robot's certificate, but anonymous
-        assertThrows(MqttException.class, () -> attacker("ssl://127.0.0.1:" + port, credentials.client("courier-2").socketFactory(), null, null));
-        // a robot's certificate and another identity's name with a guessed password
+        // a certificate the broker's CA did not issue, whatever name and password come with it
+        BrokerCredentials foreign = BrokerCredentials.ensure(root.resolve("foreign"), M, List.of("courier-1"));
         MqttException wrong = assertThrows(MqttException.class,
-                () -> attacker("ssl://127.0.0.1:" + port, credentials.client("courier-2").socketFactory(), "master", "guess"));
-        assertNotEquals(0, wrong.getReasonCode());
+                () -> attacker("ssl://127.0.0.1:" + port, foreign.client("courier-1").socketFactory(), "courier-1",
+                        new String(foreign.client("courier-1").password())));
+        assertNotNull(wrong);
         // the library's own connect: a broker that refuses says so, naming the identity
         System.setProperty(ClientCredentials.PROPERTY, root.resolve("nothing-here").toString());
         try {
@@ -154,6 +154,70 @@ class SecuredBrokerTest {
             robot.publish(Topic.CONNECTION.of(M, "courier-1"), connection("courier-1", ConnectionState.ONLINE), true);
             await(() -> !later.isEmpty());
             assertEquals(List.of(ConnectionState.ONLINE), later.stream().map(r -> r.as(Connection.class).connectionState()).toList());
+        }
+    }
+
+    /**
+     * The login is the certificate's identity and the client id is the login: courier-2's certificate with
+     * master's name and real password, or anonymous, is courier-2 (it can neither command courier-1 nor speak
+     * for it), and under courier-1's client id it does not knock courier-1's session off.
+     */
+    @Test
+    void aCertificateLogsInAsItsOwnIdentityOnly() throws Exception {
+        List<Received> robotGot = new CopyOnWriteArrayList<>();
+        List<Received> masterGot = new CopyOnWriteArrayList<>();
+        List<String> robotProblems = new CopyOnWriteArrayList<>();
+        String tls = "ssl://127.0.0.1:" + broker.port();
+        String masterPassword = new String(credentials.client(BrokerCredentials.MASTER).password());
+        try (MqttLink robot = MqttLink.connect(broker.url(), "courier-1", "triad-agv-courier-1", null, robotProblems::add, 5, 5);
+                MqttLink master = MqttLink.connect(broker.url(), BrokerCredentials.MASTER, "triad-master-identity", null, line -> { }, 5, 5)) {
+            robot.subscribe(Topic.ORDER.of(M, "courier-1"), robotGot::add);
+            master.subscribe(Topic.STATE.ofAll(), masterGot::add);
+            master.subscribe(Topic.CONNECTION.ofAll(), masterGot::add);
+
+            // courier-2's certificate presenting master's name and password, under courier-1's client id
+            impersonate(tls, credentials.client("courier-2").socketFactory(), BrokerCredentials.MASTER, masterPassword, "triad-agv-courier-1");
+            // courier-2's certificate presenting courier-1's name, no password, under master's client id
+            impersonate(tls, credentials.client("courier-2").socketFactory(), "courier-1", null, "triad-master-identity");
+            // courier-2's certificate, anonymous
+            impersonate(tls, credentials.client("courier-2").socketFactory(), null, null, "attacker-anonymous");
+
+            master.publish(Topic.ORDER.of(M, "courier-1"), order("courier-1", "real"), false);
+            robot.publish(Topic.STATE.of(M, "courier-1"), state("courier-1", 1, "real"), false);
+            await(() -> robotGot.size() >= 1 && masterGot.stream().anyMatch(r -> r.address().topic() == Topic.STATE));
+            assertEquals(List.of("real"), robotGot.stream().map(r -> r.as(Order.class).orderId()).toList());
+            assertEquals(List.of("real"), masterGot.stream().filter(r -> r.address().topic() == Topic.STATE)
+                    .map(r -> r.as(AgvState.class).orderId()).toList());
+            assertTrue(masterGot.stream().filter(r -> r.address().topic() == Topic.CONNECTION)
+                    .noneMatch(r -> r.as(Connection.class).connectionState() == ConnectionState.CONNECTIONBROKEN), masterGot.toString());
+            assertTrue(robot.isConnected() && master.isConnected(), "a session was taken over: " + robotProblems);
+            String log = Files.readString(broker.log());
+            assertTrue(!log.contains("Client courier-1 already connected") && !log.contains("Client master already connected"),
+                    "a session was taken over:\n" + log);
+            assertTrue(log.contains("u'courier-2'"), "the attacker logged in as the certificate's identity:\n" + log);
+        }
+    }
+
+    /** Connects with a robot's certificate as someone else, then orders, pauses and speaks for courier-1. */
+    private static void impersonate(String url, SSLSocketFactory tls, String user, String password, String clientId) throws Exception {
+        MqttClient c = new MqttClient(url, clientId, new MemoryPersistence());
+        try {
+            MqttConnectOptions o = new MqttConnectOptions();
+            o.setConnectionTimeout(10);
+            o.setSocketFactory(tls);
+            if (user != null) {
+                o.setUserName(user);
+                o.setPassword(password == null ? new char[0] : password.toCharArray());
+            }
+            c.connect(o); // the certificate is valid: it logs in, as courier-2
+            c.publish(Topic.ORDER.of(M, "courier-1"), VdaJson.write(VdaJson.tree(order("courier-1", "forged"))), 1, false);
+            c.publish(Topic.INSTANT_ACTIONS.of(M, "courier-1"), VdaJson.write(VdaJson.tree(startPause("courier-1"))), 1, false);
+            c.publish(Topic.STATE.of(M, "courier-1"), VdaJson.write(VdaJson.tree(state("courier-1", Integer.MAX_VALUE, "forged"))), 1, false);
+            c.publish(Topic.CONNECTION.of(M, "courier-1"),
+                    VdaJson.write(VdaJson.tree(connection("courier-1", ConnectionState.CONNECTIONBROKEN))), 1, true);
+            c.disconnect();
+        } finally {
+            c.close(true);
         }
     }
 

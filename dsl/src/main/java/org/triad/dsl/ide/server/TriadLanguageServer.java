@@ -8,6 +8,14 @@ import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.lsp4j.ClientCapabilities;
 import org.eclipse.lsp4j.DeclarationParams;
+import org.eclipse.lsp4j.DocumentFormattingParams;
+import org.eclipse.lsp4j.DocumentRangeFormattingParams;
+import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.eclipse.lsp4j.TextEdit;
+import org.eclipse.lsp4j.jsonrpc.ResponseErrorException;
+import org.eclipse.lsp4j.jsonrpc.messages.ResponseError;
+import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
+import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.lsp4j.DefinitionParams;
 import org.eclipse.lsp4j.DidChangeWatchedFilesRegistrationOptions;
 import org.eclipse.lsp4j.FileSystemWatcher;
@@ -129,6 +137,34 @@ public class TriadLanguageServer extends org.eclipse.xtext.ide.server.LanguageSe
 		ClientCapabilities c = clientCapabilities;
 		return c != null && c.getWorkspace() != null && c.getWorkspace().getDidChangeWatchedFiles() != null
 				&& Boolean.TRUE.equals(c.getWorkspace().getDidChangeWatchedFiles().getDynamicRegistration());
+	}
+
+	/**
+	 * The longest document formatted, in characters: Xtext's formatter takes about a minute for 5 MB and
+	 * cannot be stopped midway, so a larger document is refused at once rather than cut off at the
+	 * request bound ({@link GuardedRequestManager#REQUEST_BOUND}) with the formatter still running.
+	 */
+	public static final int MAX_FORMATTED_CHARS = 1 << 20;
+
+	@Override
+	protected List<? extends TextEdit> formatting(DocumentFormattingParams params, CancelIndicator cancelIndicator) {
+		refuseLargeDocument(params.getTextDocument());
+		return super.formatting(params, cancelIndicator);
+	}
+
+	@Override
+	protected List<? extends TextEdit> rangeFormatting(DocumentRangeFormattingParams params, CancelIndicator cancelIndicator) {
+		refuseLargeDocument(params.getTextDocument());
+		return super.rangeFormatting(params, cancelIndicator);
+	}
+
+	private void refuseLargeDocument(TextDocumentIdentifier textDocument) {
+		URI uri = getURI(textDocument);
+		int length = getWorkspaceManager().doRead(uri, (document, resource) -> document.getContents().length());
+		if (length > MAX_FORMATTED_CHARS) {
+			throw new ResponseErrorException(new ResponseError(ResponseErrorCode.RequestFailed, "the document has " + length
+					+ " characters; the Triad language server formats documents of at most " + MAX_FORMATTED_CHARS + " characters", null));
+		}
 	}
 
 	/** The declaration of the type of the value under the cursor (a parameter's, property's, attribute's or object's class). */

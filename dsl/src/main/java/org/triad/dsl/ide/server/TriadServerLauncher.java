@@ -7,6 +7,11 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 
 import org.eclipse.lsp4j.jsonrpc.Launcher;
+import org.eclipse.lsp4j.jsonrpc.MessageConsumer;
+import org.eclipse.lsp4j.jsonrpc.MessageProducer;
+import org.eclipse.lsp4j.jsonrpc.RemoteEndpoint;
+import org.eclipse.lsp4j.jsonrpc.json.ConcurrentMessageProcessor;
+import org.eclipse.lsp4j.jsonrpc.json.MessageJsonHandler;
 import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.LaunchArgs;
@@ -16,7 +21,8 @@ import com.google.inject.Inject;
 
 /**
  * Starts the language server on standard input and output ({@code triad lsp}) with
- * {@link ProtocolErrors} answering failed requests, and with the {@link GuardedServerModule}.
+ * {@link ProtocolErrors} answering failed requests, the {@link GuardedMessageProducer} reading the
+ * client's messages, and the {@link GuardedServerModule}.
  */
 public class TriadServerLauncher extends ServerLauncher {
 	@Inject
@@ -29,11 +35,29 @@ public class TriadServerLauncher extends ServerLauncher {
 	/** The server's end of a connection, as {@code triad lsp} and the tests make it. */
 	public static Launcher<LanguageClient> createLauncher(LanguageServerImpl server, InputStream in, OutputStream out, boolean validate,
 			PrintWriter trace) {
-		Launcher<LanguageClient> launcher = new Launcher.Builder<LanguageClient>().setLocalService(server)
+		Launcher<LanguageClient> launcher = new GuardedBuilder().setLocalService(server)
 				.setRemoteInterface(LanguageClient.class).setInput(in).setOutput(out).validateMessages(validate).traceMessages(trace)
 				.setExceptionHandler(ProtocolErrors::toResponseError).create();
 		server.connect(launcher.getRemoteProxy());
 		return launcher;
+	}
+
+	/** LSP4J's launcher reading the client's messages with the {@link GuardedMessageProducer}. */
+	private static final class GuardedBuilder extends Launcher.Builder<LanguageClient> {
+		private MessageJsonHandler json;
+		private RemoteEndpoint endpoint;
+
+		@Override
+		protected RemoteEndpoint createRemoteEndpoint(MessageJsonHandler jsonHandler) {
+			json = jsonHandler;
+			endpoint = super.createRemoteEndpoint(jsonHandler);
+			return endpoint;
+		}
+
+		@Override
+		protected ConcurrentMessageProcessor createMessageProcessor(MessageProducer reader, MessageConsumer consumer, LanguageClient proxy) {
+			return super.createMessageProcessor(new GuardedMessageProducer(input, json, endpoint), consumer, proxy);
+		}
 	}
 
 	@Override
