@@ -142,6 +142,9 @@ public final class TrafficBenchmark {
             double cpuMicrosPerRobotHour, double cpuMicrosPerGrant) {
     }
 
+    /** Lift rides and, for {@code -Dtraffic.why}, why requests were refused or timed out (robot names and floors left out), counted per run. */
+    private static final Map<String, Integer> EVENTS = new HashMap<>();
+
     private Result run(int fleet, double hours, boolean reservations, long seed) {
         Random rnd = new Random(seed);
         double[] now = { 0 };
@@ -208,6 +211,7 @@ public final class TrafficBenchmark {
                             b.baseEnd = g.stretch().size() - 1;
                             grants++;
                         } else if (d instanceof Refused r) {
+                            EVENTS.merge("refused-start " + r.reason().replaceAll("r\\d+", "r").replaceAll("'f\\d\\.", "'"), 1, Integer::sum);
                             b.route = List.of(here);
                             yieldFirst(table, b, here, null, rnd);
                             makeWay(table, bots, b, r, now[0], rnd);
@@ -233,6 +237,9 @@ public final class TrafficBenchmark {
                 b.onEdge += SPEED * DT;
                 moved = true;
                 if (b.onEdge >= len(here, next)) {
+                    if (map.edge(here, next).orElseThrow().id().equals("ride")) {
+                        EVENTS.merge("rides", 1, Integer::sum);
+                    }
                     b.onEdge = 0;
                     b.at++;
                     if (table != null) {
@@ -256,6 +263,7 @@ public final class TrafficBenchmark {
                             b.baseEnd += g.stretch().size() - 1;
                             grants++;
                         } else if (d instanceof Refused r) {
+                            EVENTS.merge("refused-ahead " + r.reason().replaceAll("r\\d+", "r").replaceAll("'f\\d\\.", "'"), 1, Integer::sum);
                             truncate(table, b, now[0], rnd);
                             makeWay(table, bots, b, r, now[0], rnd);
                         } else {
@@ -265,6 +273,7 @@ public final class TrafficBenchmark {
                 }
                 for (Wait w : table.overdue(WAIT_BOUND)) {
                     Bot b = bots.get(Integer.parseInt(w.robot().substring(1)));
+                    EVENTS.merge("overdue " + w.blocking().stream().map(x -> x.kind().toString()).sorted().distinct().toList(), 1, Integer::sum);
                     table.cancel(b.name).granted().forEach(g -> {
                         Bot o = bots.get(Integer.parseInt(g.robot().substring(1)));
                         o.baseEnd += g.stretch().size() - 1;
@@ -416,14 +425,18 @@ public final class TrafficBenchmark {
         long seed = args.length > 1 ? Long.parseLong(args[1]) : 42;
         TrafficBenchmark bench = new TrafficBenchmark();
         System.out.printf(Locale.ROOT, "traffic benchmark: %.1f simulated hours per fleet, seed %d, kinematic simulation (see javadoc)%n", hours, seed);
-        System.out.printf(Locale.ROOT, "%-6s | %-12s | %10s | %11s | %6s | %7s | %-26s | %-20s | %-20s | %-20s | %12s | %11s%n", "robots",
-                "reservations", "collisions", "standstills", "cycles", "tasks/h", "wait per task med/p95/max", "lift med/p95/max",
+        System.out.printf(Locale.ROOT, "%-6s | %-12s | %10s | %11s | %6s | %7s | %11s | %-26s | %-20s | %-20s | %-20s | %12s | %11s%n", "robots",
+                "reservations", "collisions", "standstills", "cycles", "tasks/h", "lift rides/h", "wait per task med/p95/max", "lift med/p95/max",
                 "door med/p95/max", "corridor med/p95/max", "cpu us/robot-h", "cpu us/grant");
         for (int fleet : new int[] { 2, 5, 10, 20 }) {
             for (boolean res : new boolean[] { true, false }) {
+                EVENTS.clear();
                 Result r = bench.run(fleet, hours, res, seed);
-                System.out.printf(Locale.ROOT, "%-6d | %-12s | %10d | %11d | %6d | %7.1f | %-26s | %-20s | %-20s | %-20s | %12.1f | %11.1f%n", fleet,
-                        res ? "yes" : "no", r.collisions(), r.standstills(), r.cycles(), r.tasksPerHour(), res ? q(r.taskWaits()) : "-",
+                if (System.getProperty("traffic.why") != null) {
+                    EVENTS.entrySet().stream().filter(e -> !e.getKey().equals("rides")).sorted((a, c) -> c.getValue() - a.getValue()).limit(10).forEach(e -> System.out.println("   " + e.getValue() + " " + e.getKey()));
+                }
+                System.out.printf(Locale.ROOT, "%-6d | %-12s | %10d | %11d | %6d | %7.1f | %11.1f | %-26s | %-20s | %-20s | %-20s | %12.1f | %11.1f%n", fleet,
+                        res ? "yes" : "no", r.collisions(), r.standstills(), r.cycles(), r.tasksPerHour(), EVENTS.getOrDefault("rides", 0) / hours, res ? q(r.taskWaits()) : "-",
                         res ? q(r.waits().get(Kind.LIFT)) : "-", res ? q(r.waits().get(Kind.DOOR)) : "-",
                         res ? q(r.waits().get(Kind.CORRIDOR)) : "-", r.cpuMicrosPerRobotHour(), r.cpuMicrosPerGrant());
             }
