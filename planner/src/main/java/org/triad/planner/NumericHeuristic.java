@@ -19,10 +19,148 @@ final class NumericHeuristic {
     private final NumericTask task;
     private final List<NumericTask.Cond> goals = new ArrayList<>();
 
+    /** Per operator, how much it makes the metric grow (its unconditional accumulator effects, valued in the initial state; at least 0). */
+    private final double[] opCost;
+    /** The least positive {@link #opCost}: the price of a step a numeric condition still needs. */
+    private final double cheapest;
+    private final boolean metricOnlyGrows;
+
     NumericHeuristic(NumericTask task) {
         this.task = task;
         if (task.goal instanceof NumericTask.All a) goals.addAll(a.parts());
         else goals.add(task.goal);
+        opCost = new double[task.ops.size()];
+        boolean grows = task.metric != null;
+        for (int f = 0; f < task.fluentNames.size() && grows; f++) {
+            if (NumericTask.mentions(task.metric, f) && (!task.accumulator[f] || task.metricWeight[f] < 0)) grows = false;
+        }
+        double least = Double.POSITIVE_INFINITY;
+        for (int o = 0; o < task.ops.size(); o++) {
+            double c = 0;
+            for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                for (NumericTask.NumEffect n : e.numeric()) {
+                    double w = task.metricWeight[n.fluent()];
+                    if (w == 0) continue;
+                    double amount = NumericTask.value(n.value(), task.initValues);
+                    double delta = w * (n.kind().equals("decrease") ? -amount : amount);
+                    if (!(n.value() instanceof NumericTask.Num) || delta < 0) grows = false;
+                    if (e.when() == NumericTask.TRUE && Double.isFinite(delta)) c += delta;
+                }
+            }
+            opCost[o] = Math.max(0, c);
+            if (opCost[o] > 0) least = Math.min(least, opCost[o]);
+        }
+        cheapest = least == Double.POSITIVE_INFINITY ? 0 : least;
+        metricOnlyGrows = grows;
+    }
+
+    /** Whether no step can make the metric smaller (so a partial plan as costly as a found one can be pruned). */
+    boolean metricOnlyGrows() {
+        return metricOnlyGrows;
+    }
+
+    /**
+     * A cost-sensitive estimate for the metric: h_add over the same layered numeric relaxation, each
+     * operator costing its {@link #opCost} plus its fact preconditions' costs, and a numeric condition
+     * not yet true in the state the {@link #cheapest} step per layer it needs. Without action costs in
+     * the metric it is the layer estimate. Not admissible; it orders weighted A* by cost.
+     */
+    double estimateCost(BitSet facts, double[] values) {
+        if (cheapest == 0) {
+            int h = estimate(facts, values);
+            return h == DEAD_END ? Double.POSITIVE_INFINITY : h;
+        }
+        int nf = task.factNames.size();
+        double[] fcost = new double[nf];
+        java.util.Arrays.fill(fcost, Double.POSITIVE_INFINITY);
+        for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) fcost[f] = 0;
+        int[] opLayer = new int[task.ops.size()];
+        java.util.Arrays.fill(opLayer, -1);
+        int[] goalLayer = new int[goals.size()];
+        java.util.Arrays.fill(goalLayer, -1);
+        BitSet reached = (BitSet) facts.clone();
+        double[] lo = values.clone();
+        double[] hi = values.clone();
+        int open = goals.size();
+        int allReachedAt = -1;
+        for (int layer = 0; layer <= MAX_LAYERS; layer++) {
+            for (int g = 0; g < goals.size(); g++) {
+                if (goalLayer[g] < 0 && holds(goals.get(g), reached, lo, hi)) {
+                    goalLayer[g] = layer;
+                    open--;
+                }
+            }
+            if (open == 0 && allReachedAt < 0) allReachedAt = layer;
+            BitSet nextFacts = (BitSet) reached.clone();
+            double[] nextLo = lo.clone();
+            double[] nextHi = hi.clone();
+            boolean costChanged = false;
+            for (int o = 0; o < task.ops.size(); o++) {
+                NumericTask.Op op = task.ops.get(o);
+                if (!holds(op.pre(), reached, lo, hi)) continue;
+                if (opLayer[o] < 0) opLayer[o] = layer;
+                double c = opCost[o] + factCost(op.pre(), fcost) + (numericHolds(op.pre(), values) ? 0 : cheapest * Math.max(1, opLayer[o]));
+                for (NumericTask.Effects e : op.effects()) {
+                    if (!holds(e.when(), reached, lo, hi)) continue;
+                    double ce = e.when() == NumericTask.TRUE ? c : c + factCost(e.when(), fcost);
+                    for (int f : e.adds()) {
+                        nextFacts.set(f);
+                        if (ce < fcost[f]) {
+                            fcost[f] = ce;
+                            costChanged = true;
+                        }
+                    }
+                    if (allReachedAt < 0) for (NumericTask.NumEffect n : e.numeric()) if (!task.accumulator[n.fluent()]) widen(n, lo, hi, nextLo, nextHi);
+                }
+            }
+            if (allReachedAt >= 0 && (!costChanged || layer > allReachedAt + 8)) {
+                double sum = 0;
+                for (int g = 0; g < goals.size(); g++) {
+                    NumericTask.Cond c = goals.get(g);
+                    sum += factCost(c, fcost) + (numericHolds(c, values) ? 0 : cheapest * Math.max(1, goalLayer[g]));
+                }
+                return sum;
+            }
+            boolean changed = costChanged || !nextFacts.equals(reached);
+            for (int i = 0; i < lo.length && !changed; i++) changed = nextLo[i] != lo[i] || nextHi[i] != hi[i];
+            if (!changed) return Double.POSITIVE_INFINITY;
+            reached = nextFacts;
+            lo = nextLo;
+            hi = nextHi;
+        }
+        return Double.POSITIVE_INFINITY;
+    }
+
+    /** The summed cost of a condition's facts (the cheapest part of a disjunction). */
+    private static double factCost(NumericTask.Cond c, double[] fcost) {
+        if (c instanceof NumericTask.Fact f) return f.positive() ? fcost[f.id()] : 0;
+        if (c instanceof NumericTask.All a) {
+            double s = 0;
+            for (NumericTask.Cond p : a.parts()) s += factCost(p, fcost);
+            return s;
+        }
+        if (c instanceof NumericTask.Any a) {
+            double m = Double.POSITIVE_INFINITY;
+            for (NumericTask.Cond p : a.parts()) m = Math.min(m, factCost(p, fcost));
+            return m == Double.POSITIVE_INFINITY ? 0 : m;
+        }
+        return 0;
+    }
+
+    /** Whether the condition's comparisons hold in the state's values (its facts not considered). */
+    private static boolean numericHolds(NumericTask.Cond c, double[] values) {
+        if (c instanceof NumericTask.Cmp m) {
+            return NumericTask.holds(m.op(), NumericTask.value(m.left(), values), NumericTask.value(m.right(), values));
+        }
+        if (c instanceof NumericTask.All a) {
+            for (NumericTask.Cond p : a.parts()) if (!numericHolds(p, values)) return false;
+            return true;
+        }
+        if (c instanceof NumericTask.Any a) {
+            for (NumericTask.Cond p : a.parts()) if (numericHolds(p, values)) return true;
+            return a.parts().isEmpty();
+        }
+        return true;
     }
 
     int estimate(BitSet facts, double[] values) {
@@ -50,7 +188,7 @@ final class NumericHeuristic {
                 for (NumericTask.Effects e : op.effects()) {
                     if (!holds(e.when(), reached, lo, hi)) continue;
                     for (int f : e.adds()) nextFacts.set(f);
-                    for (NumericTask.NumEffect n : e.numeric()) widen(n, lo, hi, nextLo, nextHi);
+                    for (NumericTask.NumEffect n : e.numeric()) if (!task.accumulator[n.fluent()]) widen(n, lo, hi, nextLo, nextHi);
                 }
             }
             boolean factsChanged = !nextFacts.equals(reached);

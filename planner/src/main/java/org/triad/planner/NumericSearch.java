@@ -15,15 +15,31 @@ import org.triad.planner.pddl.Problem;
 
 /**
  * Plans PDDL 2.1 numeric tasks (level 2): greedy best-first search over states of facts and fluent
- * values, guided by {@link NumericHeuristic}, ties broken by cost so far and then by the order actions
- * were grounded in (so a task gets the same plan on every run). An instance is applicable when its
- * precondition holds and every value its effects compute is a finite number (a division by zero or an
- * overflow while searching makes the instance inapplicable in that state, as an undefined value does in
- * PDDL). The work is bounded by a number of expanded states as well as by the timeout.
+ * values, guided by {@link NumericHeuristic}, ties broken by the metric so far (plan length without a
+ * {@code :metric}) and then by the order actions were grounded in (so a task gets the same plan on every
+ * run). An instance is applicable when its precondition holds and every value its effects compute is a
+ * finite number (a division by zero or an overflow while searching makes the instance inapplicable in
+ * that state, as an undefined value does in PDDL).
+ * <p>
+ * <b>The metric.</b> With a {@code :metric}, the first plan is then improved as LAMA and Metric-FF's
+ * optimising mode do: weighted A* restarts (weights 5, 3, 2, 1) ordered by the metric so far plus a
+ * cost-sensitive estimate ({@link NumericHeuristic#estimateCost}), keeping the best plan; when the metric
+ * only grows along a plan (action costs, fuel used), a state as costly as the best plan is pruned.
+ * Fluents that only accumulate ({@link NumericTask#accumulator}) are left out of duplicate detection
+ * (the cheaper of two states that differ only in them is kept). Every budget counts heuristic
+ * evaluations, never time: the same problem gets the same plan under any load; the timeout only ends
+ * planning, and a plan whose improvement it cut short is flagged ({@link SolveResult#isBestSoFar()}).
  */
 final class NumericSearch {
     /** States expanded before giving up, whatever the clock says. */
     static final long EXPANSION_BUDGET = 2_000_000;
+    /** Improving by the metric may evaluate this many times the states the first plan needed ... */
+    static final long IMPROVEMENT_FACTOR = 10;
+    /** ... at least this many ... */
+    static final long IMPROVEMENT_MIN_EVALUATIONS = 20_000;
+    /** ... and never more than this many. */
+    static final long IMPROVEMENT_MAX_EVALUATIONS = 200_000;
+    private static final int[] WEIGHTS = { 5, 3, 2, 1 };
 
     private NumericSearch() { }
 
@@ -31,19 +47,60 @@ final class NumericSearch {
         return org.triad.planner.pddl.NumericParts.isNumeric(domain) || org.triad.planner.pddl.NumericParts.isNumeric(problem.goal());
     }
 
-    private record Key(BitSet facts, double[] values) {
+    /** A state: facts and values; equal states may differ in the accumulators {@code ignored} marks. */
+    private static final class Key {
+        final BitSet facts;
+        final double[] values;
+        private final boolean[] ignored;
+        private int hash;
+
+        Key(BitSet facts, double[] values, boolean[] ignored) {
+            this.facts = facts;
+            this.values = values;
+            this.ignored = ignored;
+        }
+
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.facts.equals(facts) && Arrays.equals(k.values, values);
+            if (!(o instanceof Key k) || !k.facts.equals(facts)) return false;
+            for (int i = 0; i < values.length; i++) {
+                if (!ignored[i] && Double.compare(values[i], k.values[i]) != 0) return false;
+            }
+            return true;
         }
 
         @Override
         public int hashCode() {
-            return facts.hashCode() * 31 + Arrays.hashCode(values);
+            if (hash == 0) {
+                int h = facts.hashCode();
+                for (int i = 0; i < values.length; i++) if (!ignored[i]) h = 31 * h + Double.hashCode(values[i]);
+                hash = h == 0 ? 1 : h;
+            }
+            return hash;
         }
     }
 
-    private record Node(Key state, int parent, int op, double g, int h, long order) { }
+    /** {@code g}: the metric's growth since the start (plan length without a metric); {@code f}: the order of the open list. */
+    private record Node(Key state, int parent, int op, double g, double f, int h, long order) { }
+
+    private enum Outcome { FOUND, EXHAUSTED, LIMIT, TIMEOUT }
+
+    /** One search's bookkeeping: its nodes and, when found, the goal node. */
+    private static final class Run {
+        final List<Node> nodes = new ArrayList<>();
+        Outcome outcome;
+        int goal = -1;
+        long expanded;
+        /** Steps left out because a value they compute is not a finite number, and the first of them. */
+        long faults;
+        int firstFault = -1;
+
+        String faultNote(NumericTask task) {
+            if (faults == 0) return "";
+            return "; " + faults + " step" + (faults == 1 ? " was" : "s were") + " left out because a value computed is not a finite number"
+                    + " (a division by zero or an overflow), the first " + task.ops.get(firstFault).label();
+        }
+    }
 
     static SolveResult solve(Domain domain, Problem problem, Duration timeout) {
         long start = System.nanoTime();
@@ -53,6 +110,8 @@ final class NumericSearch {
             task = new NumericTask(domain, problem);
         } catch (PlanningInputException e) {
             return SolveResult.error(e.getMessage());
+        } catch (org.triad.planner.pddl.PddlParseException e) {
+            return SolveResult.error(e.getMessage());
         } catch (RuntimeException e) {
             return SolveResult.error("internal error while grounding: " + e);
         }
@@ -61,47 +120,137 @@ final class NumericSearch {
         NumericHeuristic h = new NumericHeuristic(task);
         BitSet initFacts = new BitSet();
         task.initFacts.forEach(initFacts::set);
-        Key init = new Key(initFacts, task.initValues);
-        List<Node> nodes = new ArrayList<>();
+        Key init = new Key(initFacts, task.initValues, task.accumulator);
+        int h0 = h.estimate(init.facts, init.values);
+        if (h0 == NumericHeuristic.DEAD_END) {
+            return SolveResult.unsolvable("the goal is unreachable even when nothing is ever deleted and every fluent can take any value its actions reach"
+                    + task.undefinedNote(), stats(groundMs, searchStart, 0, 1));
+        }
+        long[] evaluations = { 1 };
+        Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
+        long expanded = first.expanded;
+        if (first.outcome == Outcome.EXHAUSTED) {
+            return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
+        }
+        if (first.outcome != Outcome.FOUND) {
+            SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
+            String note = task.undefinedNote() + first.faultNote(task);
+            return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
+        }
+        List<Integer> best = eliminateRedundant(task, init, opsTo(first.nodes, first.goal));
+        boolean cutShort = false;
+        if (task.metric != null) {
+            double bestCost = metricOf(task, init, best);
+            long budget = Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
+            long limit = evaluations[0] + budget;
+            boolean monotone = h.metricOnlyGrows();
+            for (int k = 0; k < WEIGHTS.length; k++) {
+                int w = WEIGHTS[k];
+                if (evaluations[0] >= limit) break;
+                // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
+                // must not starve the less greedy ones that can
+                long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
+                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone, EXPANSION_BUDGET, share, deadline, evaluations);
+                expanded += r.expanded;
+                if (r.outcome == Outcome.TIMEOUT) {
+                    cutShort = true;
+                    break;
+                }
+                if (r.outcome == Outcome.FOUND) {
+                    List<Integer> plan = eliminateRedundant(task, init, opsTo(r.nodes, r.goal));
+                    double cost = metricOf(task, init, plan);
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = plan;
+                    }
+                }
+                // an exhausted A* (weight 1) under the bound proves the best plan optimal (for an admissible estimate)
+                if (r.outcome == Outcome.EXHAUSTED && w == 1) break;
+            }
+        }
+        SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
+        return cutShort ? SolveResult.bestSoFar(plan(task, best), st) : SolveResult.solved(plan(task, best), st);
+    }
+
+    /**
+     * Best-first search: greedy on the layer estimate (ties: g, then order) when {@code weight} is 0,
+     * else weighted A* on g + weight * the cost estimate, reopening a state reached more cheaply and
+     * pruning what cannot beat {@code bound}. With {@code allGoals} (a metric that some step makes
+     * smaller, such as a battery to keep high) the estimate is the layer one and the search goes on past
+     * goal states until its budget ends, returning the best goal state it met.
+     */
+    private static Run search(NumericTask task, NumericHeuristic h, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
+                              long maxExpansions, long maxEvaluations, long deadline, long[] evaluations) {
+        Run run = new Run();
+        List<Node> nodes = run.nodes;
         Map<Key, Integer> seen = new HashMap<>();
         PriorityQueue<Integer> open = new PriorityQueue<>((x, y) -> {
             Node a = nodes.get(x), b = nodes.get(y);
+            if (a.f != b.f) return Double.compare(a.f, b.f);
             if (a.h != b.h) return Integer.compare(a.h, b.h);
             if (a.g != b.g) return Double.compare(a.g, b.g);
             return Long.compare(a.order, b.order);
         });
-        int h0 = h.estimate(init.facts, init.values);
-        if (h0 == NumericHeuristic.DEAD_END) {
-            return SolveResult.unsolvable("the goal is unreachable even when nothing is ever deleted and every fluent can take any value its actions reach",
-                    stats(groundMs, searchStart, 0, 1));
-        }
-        nodes.add(new Node(init, -1, -1, 0, h0, 0));
+        double base = task.metricValue(init.values);
+        double f0 = weight == 0 ? h0 : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
+        nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
         open.add(0);
-        long expanded = 0;
         while (!open.isEmpty()) {
             int id = open.poll();
             Node n = nodes.get(id);
+            if (seen.get(n.state) != id) continue; // reached again more cheaply since
+            if (n.g >= bound) continue;
             if (holds(task.goal, n.state)) {
-                List<Integer> ops = eliminateRedundant(task, init, opsTo(nodes, id));
-                return SolveResult.solved(plan(task, ops), stats(groundMs, searchStart, expanded, nodes.size()));
+                if (!allGoals) {
+                    run.outcome = Outcome.FOUND;
+                    run.goal = id;
+                    return run;
+                }
+                // a metric that can fall: a later goal state may be better, so the search goes on
+                if (run.goal < 0 || n.g < nodes.get(run.goal).g) run.goal = id;
             }
-            if (++expanded > EXPANSION_BUDGET || System.nanoTime() > deadline) {
-                return SolveResult.timeout(stats(groundMs, searchStart, expanded, nodes.size()));
+            if (System.nanoTime() > deadline) {
+                run.outcome = Outcome.TIMEOUT;
+                return run;
+            }
+            if (++run.expanded > maxExpansions || evaluations[0] >= maxEvaluations) {
+                run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.LIMIT;
+                return run;
             }
             for (int o = 0; o < task.ops.size(); o++) {
                 NumericTask.Op op = task.ops.get(o);
                 if (!holds(op.pre(), n.state)) continue;
-                Key next = apply(op, n.state);
-                if (next == null || seen.containsKey(next)) continue;
+                Key next = apply(op, n.state, task.accumulator);
+                if (next == null) {
+                    if (run.faults++ == 0) run.firstFault = o;
+                    continue;
+                }
+                double g = task.metric == null ? n.g + 1 : task.metricValue(next.values) - base;
+                Integer old = seen.get(next);
+                if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;
+                if (g >= bound) continue;
                 int hv = h.estimate(next.facts, next.values);
+                evaluations[0]++;
+                if (hv == NumericHeuristic.DEAD_END) {
+                    seen.put(next, -1);
+                    continue;
+                }
+                double fv = weight == 0 ? hv : g + weight * (allGoals ? hv : h.estimateCost(next.facts, next.values));
                 seen.put(next, nodes.size());
-                if (hv == NumericHeuristic.DEAD_END) continue;
-                nodes.add(new Node(next, id, o, n.g + op.cost(), hv, nodes.size()));
+                nodes.add(new Node(next, id, o, g, fv, hv, nodes.size()));
                 open.add(nodes.size() - 1);
             }
         }
-        return SolveResult.unsolvable("search space exhausted", stats(groundMs, searchStart, expanded, nodes.size()));
+        run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.EXHAUSTED;
+        return run;
+    }
+
+    /** The metric's value at the end of {@code plan} (the plan is valid). */
+    private static double metricOf(NumericTask task, Key init, List<Integer> plan) {
+        Key s = init;
+        for (int o : plan) s = apply(task.ops.get(o), s, task.accumulator);
+        return task.metricValue(s.values);
     }
 
     private static SolveResult.Stats stats(double groundMs, long searchStart, long expanded, long evaluated) {
@@ -125,13 +274,20 @@ final class NumericSearch {
      * Greedy action elimination (Nakhost and Müller): drop one step at a time, first to last, wherever the
      * rest still applies and reaches the goal. Bounded by the square of the plan's length in step replays.
      */
-    static List<Integer> eliminateRedundant(NumericTask task, Key init, List<Integer> plan) {
+    private static List<Integer> eliminateRedundant(NumericTask task, Key init, List<Integer> plan) {
         List<Integer> current = new ArrayList<>(plan);
+        double cost = task.metric == null ? 0 : metricOf(task, init, current);
         for (int i = 0; i < current.size(); ) {
             List<Integer> candidate = new ArrayList<>(current);
             candidate.remove(i);
-            if (reachesGoal(task, init, candidate)) current = candidate;
-            else i++;
+            // a step whose removal makes the metric worse stays (a metric may reward an action)
+            double c = 0;
+            if (reachesGoal(task, init, candidate) && (task.metric == null || (c = metricOf(task, init, candidate)) <= cost)) {
+                current = candidate;
+                cost = c;
+            } else {
+                i++;
+            }
         }
         return current;
     }
@@ -141,14 +297,14 @@ final class NumericSearch {
         for (int o : ops) {
             NumericTask.Op op = task.ops.get(o);
             if (!holds(op.pre(), s)) return false;
-            s = apply(op, s);
+            s = apply(op, s, task.accumulator);
             if (s == null) return false;
         }
         return holds(task.goal, s);
     }
 
     /** The state after {@code op}, or null when a value it computes is not a finite number. */
-    private static Key apply(NumericTask.Op op, Key s) {
+    private static Key apply(NumericTask.Op op, Key s, boolean[] accumulator) {
         BitSet facts = (BitSet) s.facts.clone();
         double[] values = s.values.clone();
         List<NumericTask.Effects> active = new ArrayList<>();
@@ -170,7 +326,7 @@ final class NumericSearch {
                 values[n.fluent()] = v == 0 ? 0 : v; // -0.0 and 0.0 are one state
             }
         }
-        return new Key(facts, values);
+        return new Key(facts, values, accumulator);
     }
 
     static boolean holds(NumericTask.Cond c, Key s) {
@@ -190,17 +346,6 @@ final class NumericSearch {
 
     /** NaN for an undefined fluent or a division by zero: every comparison with it is false. */
     private static double value(NumericTask.Expr e, double[] values) {
-        if (e instanceof NumericTask.Num n) return n.value();
-        if (e instanceof NumericTask.Var v) return values[v.fluent()];
-        if (e instanceof NumericTask.Neg n) return -value(n.operand(), values);
-        NumericTask.Bin b = (NumericTask.Bin) e;
-        double l = value(b.left(), values);
-        double r = value(b.right(), values);
-        return switch (b.op()) {
-            case '+' -> l + r;
-            case '-' -> l - r;
-            case '*' -> l * r;
-            default -> r == 0 ? Double.NaN : l / r;
-        };
+        return NumericTask.value(e, values);
     }
 }

@@ -15,6 +15,7 @@ import org.triad.planner.pddl.NumericExpr;
 import org.triad.planner.pddl.NumericTerm;
 import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.pddl.PlanMetric;
 import org.triad.planner.pddl.Problem;
 import org.triad.planner.pddl.TypedName;
 
@@ -59,7 +60,7 @@ final class NumericTask {
     /** Effects of an instance, unconditional ({@code when} is TRUE) or conditional. */
     record Effects(Cond when, int[] adds, int[] dels, List<NumEffect> numeric) { }
 
-    record Op(String name, List<String> args, Cond pre, List<Effects> effects, double cost) {
+    record Op(String name, List<String> args, Cond pre, List<Effects> effects) {
         String label() {
             return "(" + name + (args.isEmpty() ? "" : " " + String.join(" ", args)) + ")";
         }
@@ -71,6 +72,19 @@ final class NumericTask {
     final Set<Integer> initFacts = new HashSet<>();
     double[] initValues;
     Cond goal;
+    /**
+     * The metric to minimise (a maximised one negated), over the state's values; null without a
+     * {@code :metric}. {@code (total-cost)} and {@code (total-time)} are fluents of the state here.
+     */
+    Expr metric;
+    /**
+     * Fluents that only accumulate: changed only by {@code increase}/{@code decrease}, read by no
+     * condition, goal or effect and only linearly by the metric ({@code total-cost}, fuel used). Two
+     * states that differ only in them have the same future, so the search keeps the cheaper one.
+     */
+    boolean[] accumulator;
+    /** Per fluent, how much the metric grows when the fluent grows by one (0 for fluents it does not read linearly). */
+    double[] metricWeight;
 
     private final Map<String, Integer> factIds = new HashMap<>();
     private final Map<String, Integer> fluentIds = new LinkedHashMap<>();
@@ -80,7 +94,6 @@ final class NumericTask {
     private final Set<String> changedFunctions = new HashSet<>();
     private final Set<String> assignedFunctions = new HashSet<>();
     private final ObjectUniverse universe;
-    private final Map<String, Double> constantCosts = new HashMap<>();
     /** Partial parameter bindings tried while grounding, at most {@link #MAX_BINDINGS} (a work bound, not a time bound). */
     private long bindings;
     static final long MAX_BINDINGS = 5_000_000;
@@ -89,12 +102,20 @@ final class NumericTask {
         if (!domain.axioms().isEmpty()) throw new PlanningInputException("derived predicates together with numeric fluents are not supported");
         universe = new ObjectUniverse(domain, problem);
         for (Action a : domain.actions()) changes(a.effects());
+        PlanMetric planMetric = PlanMetric.of(problem);
+        countsSteps = planMetric != null && planMetric.fluents().stream().anyMatch(f -> f.name().equals(PlanMetric.TOTAL_TIME));
+        if (countsSteps) changedFunctions.add(PlanMetric.TOTAL_TIME);
         for (Problem.NumericFact f : problem.numericInit()) {
             String key = NumericValues.key(f.function(), f.args());
             if (!Double.isFinite(f.value())) throw new PlanningInputException("(" + key + ") is not a finite number in :init");
             initFluents.put(key, f.value());
-            constantCosts.put(key, f.value());
         }
+        // an accumulator the problem does not start is 0, as Metric-FF and VAL take total-cost
+        if (changedFunctions.contains(PlanMetric.TOTAL_COST)
+                || planMetric != null && planMetric.fluents().stream().anyMatch(f -> f.name().equals(PlanMetric.TOTAL_COST))) {
+            initFluents.putIfAbsent(PlanMetric.TOTAL_COST, 0.0);
+        }
+        if (countsSteps) initFluents.put(PlanMetric.TOTAL_TIME, 0.0);
         for (Formula.Atom a : problem.init()) {
             String key = PddlWriter.atom(a);
             if (changedPredicates.contains(a.predicate())) initFacts.add(fact(key));
@@ -106,8 +127,133 @@ final class NumericTask {
         } catch (Undefined e) {
             throw new PlanningInputException("the goal reads " + e.getMessage() + ", which :init gives no value and no action sets");
         }
+        if (planMetric != null) {
+            try {
+                Expr m = expr(planMetric.expression(), Map.of(), "the metric");
+                metric = planMetric.minimize() ? m : new Neg(m);
+            } catch (Undefined e) {
+                throw new PlanningInputException("the metric reads " + e.getMessage() + ", which :init gives no value and no action sets");
+            }
+        }
         initValues = new double[fluentNames.size()];
         for (int i = 0; i < fluentNames.size(); i++) initValues[i] = initFluents.getOrDefault(fluentNames.get(i), Double.NaN);
+        findAccumulators();
+    }
+
+    private final boolean countsSteps;
+    /** Per fluent without a value, the actions whose instances read it (so never apply), with their numbers. */
+    private final Map<String, Map<String, Integer>> undefinedReads = new LinkedHashMap<>();
+
+    /**
+     * Why instances are missing, for a "no plan" answer: {@code (battery r2) has no value in :init (and no
+     * action assigns it), so 2 instances of 'drive' that read it never apply}; empty when none is.
+     */
+    String undefinedNote() {
+        if (undefinedReads.isEmpty()) return "";
+        List<String> parts = new ArrayList<>();
+        for (Map.Entry<String, Map<String, Integer>> e : undefinedReads.entrySet()) {
+            if (parts.size() == 3) {
+                parts.add("and " + (undefinedReads.size() - 3) + " more fluents");
+                break;
+            }
+            List<String> users = new ArrayList<>();
+            e.getValue().forEach((action, n) -> users.add(n + " instance" + (n == 1 ? "" : "s") + " of '" + action + "'"));
+            parts.add(e.getKey() + " has no value in :init (and no action assigns it), so " + String.join(" and ", users) + " that read it never apply");
+        }
+        return "; " + String.join("; ", parts);
+    }
+
+    private void findAccumulators() {
+        int n = fluentNames.size();
+        accumulator = new boolean[n];
+        metricWeight = new double[n];
+        boolean[] read = new boolean[n];
+        boolean[] onlyAccumulates = new boolean[n];
+        java.util.Arrays.fill(onlyAccumulates, true);
+        reads(goal, read);
+        for (Op op : ops) {
+            reads(op.pre(), read);
+            for (Effects e : op.effects()) {
+                reads(e.when(), read);
+                for (NumEffect x : e.numeric()) {
+                    reads(x.value(), read);
+                    if (!x.kind().equals("increase") && !x.kind().equals("decrease")) onlyAccumulates[x.fluent()] = false;
+                }
+            }
+        }
+        boolean[] linear = new boolean[n];
+        if (metric != null) linearIn(metric, true, linear, read);
+        for (int f = 0; f < n; f++) {
+            accumulator[f] = !read[f] && onlyAccumulates[f] && (metric == null || linear[f] || !mentions(metric, f));
+        }
+        if (metric != null) {
+            double[] zero = new double[n];
+            double base = value(metric, zero);
+            for (int f = 0; f < n; f++) {
+                if (!linear[f]) continue;
+                zero[f] = 1;
+                metricWeight[f] = value(metric, zero) - base;
+                zero[f] = 0;
+            }
+        }
+    }
+
+    private static void reads(Cond c, boolean[] read) {
+        if (c instanceof Cmp m) {
+            reads(m.left(), read);
+            reads(m.right(), read);
+        } else if (c instanceof All a) a.parts().forEach(p -> reads(p, read));
+        else if (c instanceof Any a) a.parts().forEach(p -> reads(p, read));
+    }
+
+    private static void reads(Expr e, boolean[] read) {
+        if (e instanceof Var v) read[v.fluent()] = true;
+        else if (e instanceof Neg x) reads(x.operand(), read);
+        else if (e instanceof Bin b) {
+            reads(b.left(), read);
+            reads(b.right(), read);
+        }
+    }
+
+    static boolean mentions(Expr e, int f) {
+        if (e instanceof Var v) return v.fluent() == f;
+        if (e instanceof Neg x) return mentions(x.operand(), f);
+        if (e instanceof Bin b) return mentions(b.left(), f) || mentions(b.right(), f);
+        return false;
+    }
+
+    /** Marks the fluents {@code e} reads linearly ({@code ok}: so far only under {@code + -} or a constant factor); any other use counts as a read. */
+    private static void linearIn(Expr e, boolean ok, boolean[] linear, boolean[] read) {
+        if (e instanceof Var v) {
+            if (ok) linear[v.fluent()] = true; else read[v.fluent()] = true;
+        } else if (e instanceof Neg x) linearIn(x.operand(), ok, linear, read);
+        else if (e instanceof Bin b) {
+            boolean lin = b.op() == '+' || b.op() == '-' || b.op() == '*' && (b.left() instanceof Num || b.right() instanceof Num)
+                    || b.op() == '/' && b.right() instanceof Num;
+            linearIn(b.left(), ok && lin, linear, read);
+            linearIn(b.right(), ok && lin, linear, read);
+        }
+    }
+
+    /** The metric's value (to minimise) for the state's values; 0 without a metric. */
+    double metricValue(double[] values) {
+        return metric == null ? 0 : value(metric, values);
+    }
+
+    /** The value of a ground expression; NaN for an undefined fluent or a division by zero. */
+    static double value(Expr e, double[] values) {
+        if (e instanceof Num n) return n.value();
+        if (e instanceof Var v) return values[v.fluent()];
+        if (e instanceof Neg n) return -value(n.operand(), values);
+        Bin b = (Bin) e;
+        double l = value(b.left(), values);
+        double r = value(b.right(), values);
+        return switch (b.op()) {
+            case '+' -> l + r;
+            case '-' -> l - r;
+            case '*' -> l * r;
+            default -> r == 0 ? Double.NaN : l / r;
+        };
     }
 
     private void changes(List<PddlEffect> effects) {
@@ -115,6 +261,7 @@ final class NumericTask {
             if (e instanceof PddlEffect.Add a) changedPredicates.add(a.atom().predicate());
             else if (e instanceof PddlEffect.Delete d) changedPredicates.add(d.atom().predicate());
             else if (e instanceof PddlEffect.Forall q) changes(q.body());
+            else if (e instanceof PddlEffect.Increase i) changedFunctions.add(i.function());
             else if (e instanceof PddlEffect.When w) changes(w.body());
             else if (e instanceof PddlEffect.NumericEffect n) {
                 changedFunctions.add(n.target().name());
@@ -194,15 +341,16 @@ final class NumericTask {
             Cond pre = cond(a.precondition(), b, false, label);
             if (pre == FALSE) return;
             List<Effects> effects = new ArrayList<>();
-            double[] cost = {0};
-            effects(a.effects(), b, TRUE, effects, cost, label);
-            ops.add(new Op(a.name(), args, pre, effects, cost[0]));
+            effects(a.effects(), b, TRUE, effects, label);
+            if (countsSteps) effects.add(new Effects(TRUE, new int[0], new int[0], List.of(new NumEffect("increase", fluent(PlanMetric.TOTAL_TIME), new Num(1)))));
+            ops.add(new Op(a.name(), args, pre, effects));
         } catch (Undefined e) {
-            // reads a fluent that never has a value: never applicable
+            // reads a fluent that never has a value: never applicable (PDDL 2.1), said when no plan is found
+            undefinedReads.computeIfAbsent(e.getMessage(), k -> new LinkedHashMap<>()).merge(a.name(), 1, Integer::sum);
         }
     }
 
-    private void effects(List<PddlEffect> list, Map<String, String> b, Cond when, List<Effects> out, double[] cost, String label) {
+    private void effects(List<PddlEffect> list, Map<String, String> b, Cond when, List<Effects> out, String label) {
         List<Integer> adds = new ArrayList<>();
         List<Integer> dels = new ArrayList<>();
         List<NumEffect> numeric = new ArrayList<>();
@@ -210,18 +358,15 @@ final class NumericTask {
             if (e instanceof PddlEffect.Add a) adds.add(fact(ground(a.atom(), b)));
             else if (e instanceof PddlEffect.Delete d) dels.add(fact(ground(d.atom(), b)));
             else if (e instanceof PddlEffect.Forall q) {
-                for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, when, out, cost, label);
+                for (Map<String, String> nb : new Normalizer(universe).bindings(q.variables(), b)) effects(q.body(), nb, when, out, label);
             } else if (e instanceof PddlEffect.When w) {
                 Cond c = cond(w.condition(), b, false, label);
-                if (c != FALSE) effects(w.body(), b, c == TRUE ? when : all(List.of(when, c)), out, cost, label);
+                if (c != FALSE) effects(w.body(), b, c == TRUE ? when : all(List.of(when, c)), out, label);
             } else if (e instanceof PddlEffect.Increase inc) {
-                cost[0] += costOf(inc.amount(), b, label);
-            } else if (e instanceof PddlEffect.NumericEffect n && n.kind().equals("increase") && n.target().name().equals("total-cost")
-                    && n.target().args().isEmpty()) {
-                // the metric's accumulator is not part of the state (every state would differ by its cost);
-                // a cost that depends on the state counts as 0 for the tie-breaking cost of the search
-                Expr amount = expr(n.value(), b, label);
-                if (amount instanceof Num v) cost[0] += v.value();
+                // an action cost: total-cost is a fluent like the others here (an accumulator, see findAccumulators)
+                NumericExpr amount = inc.amount() instanceof NumericTerm.Constant c ? new NumericExpr.Number(c.value())
+                        : new NumericExpr.Fluent(((NumericTerm.Function) inc.amount()).name(), ((NumericTerm.Function) inc.amount()).args());
+                numeric.add(new NumEffect("increase", fluent(inc.function()), expr(amount, b, label)));
             } else if (e instanceof PddlEffect.NumericEffect n) {
                 numeric.add(new NumEffect(n.kind(), fluent(groundFluent(n.target(), b)), expr(n.value(), b, label)));
             }
@@ -230,16 +375,6 @@ final class NumericTask {
             out.add(new Effects(when, adds.stream().mapToInt(Integer::intValue).toArray(), dels.stream().mapToInt(Integer::intValue).toArray(),
                     numeric));
         }
-    }
-
-    private double costOf(NumericTerm t, Map<String, String> b, String label) {
-        if (t instanceof NumericTerm.Constant c) return c.value();
-        NumericTerm.Function f = (NumericTerm.Function) t;
-        List<String> args = new ArrayList<>();
-        for (String x : f.args()) args.add(b.getOrDefault(x, x));
-        Double v = constantCosts.get(NumericValues.key(f.name(), args));
-        if (v == null) throw new Undefined("(" + NumericValues.key(f.name(), args) + ")"); // as in PDDL 2.1: never applicable
-        return v;
     }
 
     private static String ground(Formula.Atom a, Map<String, String> b) {

@@ -12,6 +12,7 @@ import org.triad.planner.pddl.PddlEffect;
 import org.triad.planner.pddl.Formula;
 import org.triad.planner.pddl.NumericExpr;
 import org.triad.planner.pddl.PddlWriter;
+import org.triad.planner.pddl.PlanMetric;
 import org.triad.planner.pddl.Problem;
 import org.triad.planner.pddl.TypedName;
 
@@ -35,6 +36,35 @@ public final class PlanValidator {
     }
 
     public static Report validate(Domain domain, Problem problem, PddlPlan plan) {
+        return replay(domain, problem, plan, new HashMap<>());
+    }
+
+    /**
+     * The value of the problem's {@code :metric} at the end of a valid plan (a maximised metric as it is,
+     * not negated); empty when the problem has no metric or the plan is not valid. {@code (total-cost)}
+     * sums the plan's action costs (0 when {@code :init} does not start it), {@code (total-time)} counts
+     * its steps.
+     */
+    public static java.util.OptionalDouble metricValue(Domain domain, Problem problem, PddlPlan plan) {
+        PlanMetric metric = PlanMetric.of(problem);
+        if (metric == null) return java.util.OptionalDouble.empty();
+        Map<String, Double> fluents = new HashMap<>();
+        if (!replay(domain, problem, plan, fluents).valid()) return java.util.OptionalDouble.empty();
+        fluents.put(PlanMetric.TOTAL_TIME, (double) plan.length());
+        fluents.putIfAbsent(PlanMetric.TOTAL_COST, 0.0);
+        try {
+            return java.util.OptionalDouble.of(NumericValues.evaluate(metric.expression(), f -> {
+                Double v = fluents.get(NumericValues.key(f.name(), f.args()));
+                if (v == null) throw new NumericValues.Fault("the metric reads (" + NumericValues.key(f.name(), f.args()) + "), which has no value");
+                return v;
+            }));
+        } catch (NumericValues.Fault e) {
+            return java.util.OptionalDouble.empty();
+        }
+    }
+
+    /** Validates {@code plan}, leaving the fluents' values at its end in {@code fluents}. */
+    private static Report replay(Domain domain, Problem problem, PddlPlan plan, Map<String, Double> fluents) {
         ObjectUniverse universe;
         try {
             universe = new ObjectUniverse(domain, problem);
@@ -42,7 +72,6 @@ public final class PlanValidator {
             return new Report(false, -1, e.getMessage(), false);
         }
         Set<Formula.Atom> state = new HashSet<>(problem.init());
-        Map<String, Double> fluents = new HashMap<>();
         for (Problem.NumericFact f : problem.numericInit()) fluents.put(NumericValues.key(f.function(), f.args()), f.value());
         Evaluator ev = new Evaluator(universe, state, fluents);
         Map<String, Integer> strata;
@@ -324,6 +353,13 @@ public final class PlanValidator {
                 } else if (e instanceof PddlEffect.When w) {
                     // the state is still the one before the action: all effects are collected before any applies
                     if (holds(w.condition(), b)) effects(w.body(), b, adds, dels, updates);
+                } else if (e instanceof PddlEffect.Increase i) {
+                    // an action cost: total-cost starts at 0 unless :init says otherwise; several costs of one action add up
+                    double amount = value(i.amount() instanceof org.triad.planner.pddl.NumericTerm.Function f
+                            ? new NumericExpr.Fluent(f.name(), f.args())
+                            : new NumericExpr.Number(((org.triad.planner.pddl.NumericTerm.Constant) i.amount()).value()), b);
+                    double before = updates.containsKey(i.function()) ? updates.get(i.function()) : fluents.getOrDefault(i.function(), 0.0);
+                    updates.put(i.function(), NumericValues.checked(before + amount, "(increase (" + i.function() + ") " + PddlWriter.number(amount) + ")"));
                 } else if (e instanceof PddlEffect.NumericEffect n) {
                     List<String> args = new ArrayList<>(n.target().args().size());
                     for (String t : n.target().args()) args.add(b.getOrDefault(t, t));

@@ -5,6 +5,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParseException;
+import org.triad.planner.pddl.PlanMetric;
 import org.triad.planner.pddl.Problem;
 
 /**
@@ -36,6 +38,12 @@ import org.triad.planner.pddl.Problem;
  * search, length-bounded weighted A* restarts) within a budget of work: twice the work to the first
  * plan (a share for grounding included), plus a little for several goals, never beyond the
  * improvement cap.
+ * <p>
+ * <b>Action costs and metrics:</b> a problem with {@code (:metric minimize (total-cost))} and actions of
+ * different costs gets the plan above made cheaper by {@link CostSearch} (Dijkstra on a route, else
+ * weighted A* restarts on costs), within a budget of work; any other metric ({@code maximize}, an
+ * expression over fluents), and every numeric problem, is minimised by {@link NumericSearch}. A problem
+ * without a metric (what RefArc plans per goal) takes none of these paths and gets the shortest plan.
  * <p>
  * <b>Deterministic:</b> every budget that decides which plan is returned counts work
  * ({@link WorkMeter}: heuristic evaluations, successor generation), never time, and every choice
@@ -93,6 +101,11 @@ public final class TriadEngine implements PddlPlanner {
      */
     static final long IMPROVEMENT_EVALUATION_FACTOR = 5;
     static final long IMPROVEMENT_MIN_EVALUATIONS = 1000;
+    /**
+     * Work a plan of a problem with action costs and {@code (:metric minimize (total-cost))} may always
+     * spend on becoming cheaper (about 0.2 s), whatever the first plan cost.
+     */
+    static final long COST_MIN_WORK = WorkMeter.UNITS_PER_SECOND / 5;
 
     private final GroundedProblemCache cache;
     private final long improvementCap;
@@ -130,6 +143,16 @@ public final class TriadEngine implements PddlPlanner {
         if (NumericSearch.isNumeric(domain, problem)) {
             return NumericSearch.solve(domain, problem, timeout); // PDDL 2.1 numeric fluents: a search of their own
         }
+        PlanMetric metric;
+        try {
+            metric = PlanMetric.of(problem);
+        } catch (PddlParseException e) {
+            return SolveResult.error(e.getMessage());
+        }
+        if (metric != null && !metric.isTotalCost() && !isPlanLength(metric)) {
+            return NumericSearch.solve(domain, problem, timeout); // any other metric: the numeric search minimises it
+        }
+        boolean minimizeCost = metric != null && metric.isTotalCost();
         long start = System.nanoTime();
         long deadline = start + timeout.toNanos();
         GroundedProblem.Query q;
@@ -154,7 +177,7 @@ public final class TriadEngine implements PddlPlanner {
             SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
             SearchTask.Scratch scratch = task.takeScratch();
             try {
-                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline, minimizeCost);
             } finally {
                 task.returnScratch(scratch);
             }
@@ -165,12 +188,17 @@ public final class TriadEngine implements PddlPlanner {
         }
     }
 
+    /** {@code minimize (total-time)}: a sequential plan's number of steps, which the engine minimises anyway. */
+    private static boolean isPlanLength(PlanMetric m) {
+        return m.minimize() && m.expression() instanceof org.triad.planner.pddl.NumericExpr.Fluent f && f.name().equals(PlanMetric.TOTAL_TIME);
+    }
+
     private static String outOfMemory(String phase) {
         return "out of memory in " + phase + ": the task needs more than the memory given (" + (Runtime.getRuntime().maxMemory() >> 20) + " MB)";
     }
 
     private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
-                              long searchStart, long deadline) {
+                              long searchStart, long deadline, boolean minimizeCost) {
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
         WorkMeter meter = new WorkMeter(h, succ);
         long workAtStart = meter.now();
@@ -261,6 +289,14 @@ public final class TriadEngine implements PddlPlanner {
             PlanImprover improver = new PlanImprover(task, h, succ, deadline, effort, evaluations, budget);
             plan = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
             bestSoFar = improver.timedOut();
+        }
+        if (minimizeCost && improvementCap > 0 && CostSearch.hasVaryingCosts(task)) {
+            // (:metric minimize (total-cost)): the plan above is short; make it cheap, within a budget of work
+            long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
+            long budget = Math.min(improvementCap, Math.max(COST_MIN_WORK, IMPROVEMENT_WORK_FACTOR * firstPlan));
+            CostSearch cheaper = new CostSearch(task, succ, deadline, budget);
+            plan = cheaper.improve(q.init(), q.goalPos(), q.goalNeg(), plan);
+            bestSoFar |= cheaper.timedOut();
         }
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());

@@ -2,6 +2,7 @@ package org.triad.planner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
@@ -9,6 +10,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParseException;
 import org.triad.planner.pddl.PddlParser;
 import org.triad.planner.pddl.Problem;
 
@@ -103,11 +105,21 @@ class NumericPlanningTest {
         assertEquals(SolveResult.Status.ERROR, r.status());
         assertEquals("the goal reads (capacity r1), which :init gives no value and no action sets", r.message());
 
+        // a division by a literal zero is a parse error at its place; by a static function that is zero, an error naming the step
+        assertEquals("divides.pddl:10:89: division by zero: '(/ ... 0)'", assertThrows(PddlParseException.class, () -> PddlParser.parseDomain(
+                TestProblems.text("numeric/battery-domain.pddl").replace("(decrease (battery ?r) (distance ?a ?b))",
+                        "(decrease (battery ?r) (/ (distance ?a ?b) 0))"), "divides.pddl")).getMessage());
         Domain divides = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl")
-                .replace("(decrease (battery ?r) (distance ?a ?b))", "(decrease (battery ?r) (/ (distance ?a ?b) 0))"), "divides.pddl");
-        SolveResult z = new TriadEngine().solve(divides, TestProblems.problem("numeric/battery-problem.pddl"), TIMEOUT);
+                .replace("(decrease (battery ?r) (distance ?a ?b))", "(decrease (battery ?r) (/ (distance ?a ?b) (capacity ?r)))"), "divides.pddl");
+        SolveResult z = new TriadEngine().solve(divides, PddlParser.parseProblem(TestProblems.text("numeric/battery-problem.pddl")
+                .replace("(= (capacity r1) 100)", "(= (capacity r1) 0)"), "zero.pddl"), TIMEOUT);
         assertEquals(SolveResult.Status.ERROR, z.status());
-        assertTrue(z.message().endsWith("divides by zero: (/ (distance ?a ?b) 0)"), z.message());
+        assertTrue(z.message().endsWith("divides by zero: (/ (distance ?a ?b) (capacity ?r))"), z.message());
+
+        // a fluent left undefined: no plan, and the answer says which fluent and which actions it cost
+        assertTrue(new TriadEngine().solve(d, undefined, TIMEOUT).message().contains(
+                "(distance c2 ward) has no value in :init (and no action assigns it), so 1 instance of 'drive' that read it never apply"),
+                new TriadEngine().solve(d, undefined, TIMEOUT).message());
 
         // a division by a fluent that is zero when the step runs: the validator names the step
         Domain byBattery = PddlParser.parseDomain(TestProblems.text("numeric/battery-domain.pddl")

@@ -29,6 +29,13 @@ public final class PddlParser {
         return new PddlParser(source).problem(SExpr.read(text, source));
     }
 
+    /** A metric's text, {@code minimize (total-cost)} (what {@link Problem#metric()} holds); a bad one is a located error. */
+    static PlanMetric parseMetric(String text, String source) {
+        SExpr e = SExpr.read("(" + text + ")", source);
+        PddlParser p = new PddlParser(source);
+        return p.metric(e, e.items);
+    }
+
     public static Domain parseDomain(Path file) throws IOException {
         return parseDomain(Files.readString(file), file.toString());
     }
@@ -457,25 +464,43 @@ public final class PddlParser {
 
     /** An object name or variable (not a number, not a function term): the operand of object equality. */
     private static boolean isObjectTerm(SExpr e) {
-        if (e.isList()) return false;
-        try {
-            Double.parseDouble(e.symbol);
-            return false;
-        } catch (NumberFormatException ex) {
-            return true;
+        return !e.isList() && !isNumber(e.symbol);
+    }
+
+    /** {@code minimize|maximize EXPRESSION}; a bare {@code total-time} (as temporal problems write it) is the fluent. */
+    private PlanMetric metric(SExpr at, List<SExpr> rest) {
+        if (rest.size() != 2 || rest.get(0).isList() || !List.of("minimize", "maximize").contains(rest.get(0).symbol.toLowerCase(java.util.Locale.ROOT))) {
+            throw err(at, "expected '(:metric minimize EXPRESSION)' or '(:metric maximize EXPRESSION)', such as '(:metric minimize (total-cost))'");
         }
+        SExpr x = rest.get(1);
+        NumericExpr e = !x.isList() && x.symbol.equalsIgnoreCase(PlanMetric.TOTAL_TIME) ? NumericExpr.Fluent.of(PlanMetric.TOTAL_TIME)
+                : !x.isList() && x.symbol.equalsIgnoreCase(PlanMetric.TOTAL_COST) ? NumericExpr.Fluent.of(PlanMetric.TOTAL_COST) : numericExpr(x);
+        for (NumericExpr.Fluent f : NumericParts.fluents(e)) {
+            for (String t : f.args()) if (t.startsWith("?")) throw err(x, "variable '" + t + "' in the metric: it must be ground");
+        }
+        return new PlanMetric(rest.get(0).symbol.equalsIgnoreCase("minimize"), e);
+    }
+
+    private static final java.util.regex.Pattern NUMBER = java.util.regex.Pattern.compile("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
+
+    /** A decimal number as PDDL writes it (Java's parser would also take {@code 0x1p3}, {@code 1d} or {@code NaN}). */
+    private static boolean isNumber(String s) {
+        return NUMBER.matcher(s).matches();
     }
 
     /** A PDDL 2.1 numeric expression: a number, {@code (f args)}, {@code (+ a b ...)}, {@code (- a b)}, {@code (- a)}, {@code (* a b ...)}, {@code (/ a b)}. */
     private NumericExpr numericExpr(SExpr e) {
         if (!e.isList()) {
-            double v;
-            try {
-                v = Double.parseDouble(e.symbol);
-            } catch (NumberFormatException ex) {
+            if (!isNumber(e.symbol)) {
+                if (List.of("nan", "inf", "infinity", "-inf", "-infinity").contains(e.symbol)) throw err(e, "'" + e.symbol + "' is not a finite number");
+                if (e.symbol.startsWith("?") || Character.isLetter(e.symbol.charAt(0))) {
+                    throw err(e, "'" + e.symbol + "' is " + (e.symbol.startsWith("?") ? "a variable, which stands for an object" : "an object")
+                            + ", not a number: numeric comparisons and effects need numbers or function terms such as (battery ?r)");
+                }
                 throw err(e, "expected a number or a function term such as (battery ?r), found '" + e.symbol + "'");
             }
-            if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
+            double v = Double.parseDouble(e.symbol);
+            if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number (too large for a double)");
             return new NumericExpr.Number(v);
         }
         if (e.items.isEmpty()) throw err(e, "empty numeric expression '()'");
@@ -489,7 +514,11 @@ public final class PddlParser {
                 throw err(e, "'" + head + "' takes " + (nary ? "two or more" : op == '-' ? "one or two" : "two") + " numeric expressions");
             }
             NumericExpr result = numericExpr(args.get(0));
-            for (SExpr a : args.subList(1, args.size())) result = new NumericExpr.Arithmetic(op, result, numericExpr(a));
+            for (SExpr a : args.subList(1, args.size())) {
+                NumericExpr right = numericExpr(a);
+                if (op == '/' && right instanceof NumericExpr.Number z && z.value() == 0) throw err(a, "division by zero: '(/ ... 0)'");
+                result = new NumericExpr.Arithmetic(op, result, right);
+            }
             return result;
         }
         if (head.startsWith("?") || head.startsWith(":")) throw err(e.items.get(0), "expected a function name, found '" + head + "'");
@@ -501,6 +530,7 @@ public final class PddlParser {
     private NumericTerm numeric(SExpr e) {
         if (!e.isList()) {
             try {
+                if (!isNumber(e.symbol)) throw new NumberFormatException(e.symbol);
                 double v = Double.parseDouble(e.symbol);
                 if (!Double.isFinite(v)) throw err(e, "'" + e.symbol + "' is not a finite number");
                 return new NumericTerm.Constant(v);
@@ -559,6 +589,7 @@ public final class PddlParser {
                     goal = formula(rest.get(0));
                 }
                 case ":metric" -> {
+                    metric(sec, rest); // checked here, so that a bad metric is an error at its place
                     StringBuilder sb = new StringBuilder();
                     for (SExpr r : rest) sb.append(sb.length() > 0 ? " " : "").append(r);
                     metric = sb.toString();

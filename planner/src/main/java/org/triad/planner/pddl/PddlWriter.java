@@ -54,7 +54,10 @@ public final class PddlWriter {
     }
 
     public static String number(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+        if (!Double.isFinite(v)) throw new IllegalArgumentException("not a finite number, which PDDL cannot write: " + v);
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
+        // plain decimals, never 1.0E20: Metric-FF, ENHSP and VAL read no exponents
+        return new java.math.BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
     }
 
     /** Groups consecutive names of the same type: {@code a b - t c - u}. */

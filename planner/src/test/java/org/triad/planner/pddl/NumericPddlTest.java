@@ -38,9 +38,13 @@ class NumericPddlTest {
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
             "(< (f ?x))|'<' takes exactly two numeric expressions",
-            "(< (f ?x) NaN)|expected a number or a function term such as (battery ?r), found 'nan'",
-            "(< (f ?x) 1e999)|'1e999' is not a finite number",
-            "(< (f ?x) ?x)|expected a number or a function term such as (battery ?r), found '?x'",
+            "(< (f ?x) NaN)|'nan' is not a finite number",
+            "(< (f ?x) 1e999)|'1e999' is not a finite number (too large for a double)",
+            "(< (f ?x) 0x1p3)|expected a number or a function term such as (battery ?r), found '0x1p3'",
+            "(< (f ?x) ?x)|'?x' is a variable, which stands for an object, not a number: numeric comparisons and effects need numbers or function terms such as (battery ?r)",
+            "(< (f ?x) lobby)|'lobby' is an object, not a number: numeric comparisons and effects need numbers or function terms such as (battery ?r)",
+            "(= ?x 5)|'?x' is a variable, which stands for an object, not a number: numeric comparisons and effects need numbers or function terms such as (battery ?r)",
+            "(< (f ?x) (/ 1 0))|division by zero: '(/ ... 0)'",
             "(> (/ (f ?x)) 1)|'/' takes two numeric expressions",
             "(> (h ?x) 1)|action 'a' uses undeclared function 'h'",
             "(> (f ?y) 1)|variable '?y' is not a parameter of action 'a'" })

@@ -41,4 +41,15 @@ class PddlWriterTest {
         assertEquals(d, PddlParser.parseDomain(text, "built"));
         assertEquals(true, text.contains("(forall (?x - (either a b)) (imply (p ?x) (not (= ?x ?r))))"), text);
     }
+
+    @Test
+    void numbersArePlainDecimalsThatOtherPlannersRead() {
+        // Double.toString would write 1.0E20 and 1.5E-7, which Metric-FF, ENHSP and VAL do not read
+        assertEquals("100000000000000000000", PddlWriter.number(1e20));
+        assertEquals("0.00000015", PddlWriter.number(1.5e-7));
+        assertEquals("2.5", PddlWriter.number(2.5));
+        assertEquals("-7", PddlWriter.number(-7));
+        assertEquals(1e20, Double.parseDouble(PddlWriter.number(1e20)));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> PddlWriter.number(Double.NaN));
+    }
 }

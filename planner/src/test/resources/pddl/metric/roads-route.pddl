@@ -1,0 +1,11 @@
+; The direct road to the ward is one step of 50 m; the corridor is three steps of 10 m.
+(define (problem route)
+  (:domain roads)
+  (:objects lobby c1 c2 ward - place)
+  (:init (at lobby)
+    (road lobby ward) (road ward lobby) (road lobby c1) (road c1 lobby) (road c1 c2) (road c2 c1) (road c2 ward) (road ward c2)
+    (= (length lobby ward) 50) (= (length ward lobby) 50) (= (length lobby c1) 10) (= (length c1 lobby) 10)
+    (= (length c1 c2) 10) (= (length c2 c1) 10) (= (length c2 ward) 10) (= (length ward c2) 10)
+    (= (total-cost) 0))
+  (:goal (at ward))
+  (:metric minimize (total-cost)))
