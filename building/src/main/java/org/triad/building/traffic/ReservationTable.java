@@ -114,6 +114,11 @@ public final class ReservationTable {
         return map;
     }
 
+    /** Seconds on the table's clock now. */
+    public double now() {
+        return clock.getAsDouble();
+    }
+
     /** Waiting and holding times observed so far, and the expected wait of a step (the planner's congestion hook). */
     public TrafficStats stats() {
         return stats;

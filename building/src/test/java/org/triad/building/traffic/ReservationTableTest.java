@@ -301,6 +301,21 @@ class ReservationTableTest {
     }
 
     @Test
+    void congestionCostsAreTheExpectedWaitInStepsAndABlockedStepIsDear() {
+        TrafficMap map = Maps.singleLane(3);
+        ReservationTable t = table(map);
+        org.triad.runtime.schema.ActionCosts costs = CongestionCosts.of(map, t::expectedWait, 10);
+        java.util.function.Function<String, org.triad.runtime.app.GenericObject> wp = n -> new org.triad.runtime.app.GenericObject(n, "WayPoint", java.util.Map.of());
+        org.triad.runtime.app.GroundAction move = new org.triad.runtime.app.GroundAction("Courier", "move", List.of(wp.apply("hall-w"), wp.apply("c1")));
+        assertEquals(0, costs.extra(move), "a free lane costs nothing extra");
+        t.block(map.area("west").orElseThrow(), "a bed in the corridor");
+        assertEquals(CongestionCosts.BLOCKED, costs.extra(move));
+        assertEquals(0, costs.extra(new org.triad.runtime.app.GroundAction("Courier", "move", List.of(wp.apply("side-w"), wp.apply("c1")))),
+                "not joined on the map: not a move traffic knows");
+        assertThrows(IllegalArgumentException.class, () -> CongestionCosts.of(map, t::expectedWait, 0));
+    }
+
+    @Test
     void misuseIsAClearError() {
         ReservationTable t = table(Maps.singleLane(1));
         t.place("r1", "hall-w");

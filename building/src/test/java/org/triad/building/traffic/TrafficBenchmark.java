@@ -38,6 +38,8 @@ public final class TrafficBenchmark {
     private static final double DWELL = 10;
     private static final double WAIT_BOUND = 60;
     private static final double RECOVERY = 30;
+    /** Robots admitted to one floor at once (its 12 places in halls and 6 rooms leave room to pass), 0 for no limit. */
+    private static final int FLOOR_ZONE = Integer.getInteger("traffic.floorZone", 0);
 
     private final TrafficMap map;
     private final Map<String, Double> length = new HashMap<>();
@@ -68,6 +70,20 @@ public final class TrafficBenchmark {
             b.node(p + "lift");
             b.edge(p + "c6", p + "lift");
             length.put(p + "c6-" + p + "lift", 3.0);
+            if (FLOOR_ZONE > 0) { // admission: no more robots on a floor than leave room to pass each other
+                List<String> members = new ArrayList<>();
+                for (String n : b.nodeIds()) {
+                    if (n.startsWith(p)) {
+                        members.add(n);
+                    }
+                }
+                for (String e : b.edgeIds()) {
+                    if (e.startsWith(p)) {
+                        members.add(e);
+                    }
+                }
+                b.area(Kind.ZONE, "floor" + f, FLOOR_ZONE, members.toArray(String[]::new));
+            }
         }
         b.edge("ride", "f1.lift", "f2.lift", 1);
         length.put("ride", RIDE * SPEED);
@@ -428,7 +444,9 @@ public final class TrafficBenchmark {
         System.out.printf(Locale.ROOT, "%-6s | %-12s | %10s | %11s | %6s | %7s | %11s | %-26s | %-20s | %-20s | %-20s | %12s | %11s%n", "robots",
                 "reservations", "collisions", "standstills", "cycles", "tasks/h", "lift rides/h", "wait per task med/p95/max", "lift med/p95/max",
                 "door med/p95/max", "corridor med/p95/max", "cpu us/robot-h", "cpu us/grant");
-        for (int fleet : new int[] { 2, 5, 10, 20 }) {
+        int[] fleets = System.getProperty("traffic.fleets") == null ? new int[] { 2, 5, 10, 20 }
+                : java.util.Arrays.stream(System.getProperty("traffic.fleets").split(",")).mapToInt(Integer::parseInt).toArray();
+        for (int fleet : fleets) {
             for (boolean res : new boolean[] { true, false }) {
                 EVENTS.clear();
                 Result r = bench.run(fleet, hours, res, seed);
