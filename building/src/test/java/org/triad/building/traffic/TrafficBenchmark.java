@@ -20,8 +20,8 @@ import org.triad.building.traffic.Resource.Kind;
  * The traffic benchmark: fleets of 2, 5, 10 and 20 robots, 8 simulated hours each of random deliveries,
  * guides and patrols between random rooms on two floors of a hospital (per floor a ring of corridors as in
  * the hospital model: wide north and south corridors, single-lane west and east corridors, a fire door,
- * six rooms behind doors for one; a lift for one between the floors), with the reservation table and
- * without it. A kinematic simulation of its own (robots at 1 m/s along the map's edges, 0.5 s steps; the
+ * six rooms behind doors for one; a lift for one between the floors; at most 17 robots admitted to a floor,
+ * a zone), with the reservation table and without it. A kinematic simulation of its own (robots at 1 m/s along the map's edges, 0.5 s steps; the
  * one-building dyn4j simulation is issue #20's): a <em>collision</em> is two robots on a resource for one
  * (more than its capacity) at once; without reservations both then stand 30 s to recover (the jam).
  * A <em>standstill</em> is 60 simulated seconds in which no robot with a task moved.
@@ -30,6 +30,9 @@ import org.triad.building.traffic.Resource.Kind;
  * mvn -B -q -pl building -am test-compile
  * java -cp building/target/classes:building/target/test-classes org.triad.building.traffic.TrafficBenchmark [hours] [seed]
  * </pre>
+ * Options: {@code -Dtraffic.fleets=20,10} (fleet sizes), {@code -Dtraffic.floorZone=N} (robots admitted per floor,
+ * 0 for no limit), {@code -Dtraffic.why} (per run, why requests were refused or timed out), {@code -Dtraffic.debug}
+ * (every robot at each standstill).
  */
 public final class TrafficBenchmark {
     private static final double DT = 0.5;
@@ -38,8 +41,8 @@ public final class TrafficBenchmark {
     private static final double DWELL = 10;
     private static final double WAIT_BOUND = 60;
     private static final double RECOVERY = 30;
-    /** Robots admitted to one floor at once (its 12 places in halls and 6 rooms leave room to pass), 0 for no limit. */
-    private static final int FLOOR_ZONE = Integer.getInteger("traffic.floorZone", 0);
+    /** Robots admitted to one floor at once (of its 18 places in halls and rooms, so a full floor keeps one to swap through), 0 for no limit. */
+    private static final int FLOOR_ZONE = Integer.getInteger("traffic.floorZone", 17);
 
     private final TrafficMap map;
     private final Map<String, Double> length = new HashMap<>();
@@ -416,7 +419,9 @@ public final class TrafficBenchmark {
             String here = b.route.get(b.at);
             Set<Resource> occ = b.onEdge > 0 ? map.step(here, b.route.get(b.at + 1)) : map.standing(here);
             for (Resource r : occ) {
-                on.computeIfAbsent(r, k -> new ArrayList<>()).add(b);
+                if (r.kind() != Kind.ZONE) { // a floor over its admission limit is crowded, not a contact
+                    on.computeIfAbsent(r, k -> new ArrayList<>()).add(b);
+                }
             }
         }
         int fresh = 0;
