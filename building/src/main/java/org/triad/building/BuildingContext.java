@@ -1,5 +1,6 @@
 package org.triad.building;
 
+import org.triad.building.traffic.TrafficBoard;
 import org.triad.refarc.fleet.FleetContext;
 
 /**
@@ -9,4 +10,9 @@ import org.triad.refarc.fleet.FleetContext;
  */
 public interface BuildingContext extends FleetContext {
     SharedWorld world();
+
+    /** Where a provider whose robots run under traffic control shows their waits to the operator (a fresh, unseen board by default). */
+    default TrafficBoard traffic() {
+        return new TrafficBoard();
+    }
 }

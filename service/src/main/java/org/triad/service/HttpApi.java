@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
 
+import org.triad.building.traffic.TrafficBoard;
 import org.triad.service.auth.AuditLog;
 import org.triad.service.auth.FailedLogins;
 import org.triad.service.auth.Principal;
@@ -35,6 +36,8 @@ final class HttpApi {
     /** Largest request body accepted, bytes: a submission is a few hundred (see {@link RequestLimits}). */
     static final int MAX_BODY = RequestLimits.MAX_BODY;
     private static final int MAX_LIST = 1000;
+    /** The waits /api/traffic lists without ?over=: longer than this many seconds. */
+    static final double TRAFFIC_WAIT_SHOWN = 30;
 
     private final FleetService service;
     private final AccessTokens tokens;
@@ -52,6 +55,8 @@ final class HttpApi {
     }
     private final Javalin app;
     private final HttpsSettings https;
+    /** Robots waiting for a corridor, a door or the lift (traffic), for the operator page. */
+    private volatile TrafficBoard traffic = new TrafficBoard();
     private volatile String listenHost;
     private volatile int listenPort;
 
@@ -79,6 +84,27 @@ final class HttpApi {
         });
         routes();
         service.addListener(eventListener);
+    }
+
+    /** Shows the waits of this board under {@code /api/traffic}. */
+    private static double waitBound(String over) {
+        if (over == null) {
+            return TRAFFIC_WAIT_SHOWN;
+        }
+        try {
+            double d = Double.parseDouble(over);
+            if (d >= 0 && d < 1e9) {
+                return d;
+            }
+        } catch (NumberFormatException e) {
+            // answered below
+        }
+        throw new ServiceError(400, "bad-request", "?over= takes the seconds a wait must exceed to be listed (at least 0), not '" + over + "'");
+    }
+
+    HttpApi showing(TrafficBoard board) {
+        this.traffic = board;
+        return this;
     }
 
     private void routes() {
@@ -171,6 +197,7 @@ final class HttpApi {
             audited(ctx, "mark-done", "task " + id(ctx));
         });
         app.get("/api/robots", ctx -> ctx.json(service.robots()));
+        app.get("/api/traffic", ctx -> ctx.json(traffic.longerThan(waitBound(ctx.queryParam("over")))));
         app.get("/api/robots/{name}/floor", ctx -> ctx.json(service.floor(ctx.pathParam("name"))
                 .orElseThrow(() -> new ServiceError(404, "no-map", "robot " + ctx.pathParam("name") + " has no floor map (its platform gives none)"))));
         app.post("/api/robots/{name}/offline", ctx -> {

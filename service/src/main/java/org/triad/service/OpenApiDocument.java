@@ -118,6 +118,21 @@ public final class OpenApiDocument {
             response(o, "200", "The robot", ref("Robot"));
             errors(o, "401", "403", "404");
         }
+        ObjectNode traffic = paths.putObject("/api/traffic");
+        traffic.putArray("parameters").addObject().put("name", "over").put("in", "query").put("required", false)
+                .put("description", "list the waits longer than this many seconds (default 30)").putObject("schema").put("type", "number").put("minimum", 0);
+        ObjectNode waiting = JSON.objectNode().put("type", "object");
+        ObjectNode wp = waiting.putObject("properties");
+        wp.putObject("robot").put("type", "string");
+        wp.putObject("seconds").put("type", "number");
+        wp.putObject("reason").put("type", "string");
+        wp.putObject("resources").put("type", "array").putObject("items").put("type", "string");
+        wp.putObject("heldBy").put("type", "array").putObject("items").put("type", "string");
+        ObjectNode tw = JSON.objectNode().put("type", "array");
+        tw.set("items", waiting);
+        response(op(traffic, "get", "listTrafficWaits", "Robots waiting for a corridor, a door or the lift longer than ?over= seconds: for what, behind whom."),
+                "200", "The waits, longest first", tw);
+        errors((ObjectNode) traffic.get("get"), "400", "401");
         ObjectNode requests = paths.putObject("/api/requests");
         response(op(requests, "get", "listRequests", "Open remote-operation requests (?all=true: also resolved ones)."), "200", "The requests",
                 arrayOf("RemoteOperationRequest"));

@@ -12,6 +12,7 @@ import java.util.ServiceLoader;
 import java.util.Set;
 
 import org.triad.building.BuildingContext;
+import org.triad.building.traffic.TrafficBoard;
 import org.triad.building.SharedWorld;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.RobotPlatformProvider;
@@ -65,6 +66,7 @@ public final class TriadService implements AutoCloseable {
     private final int port;
     private final String host;
     private final boolean secure;
+    private TrafficBoard traffic = new TrafficBoard();
 
     private TriadService(ApplicationModels models, TaskStore store, AccessTokens tokens, FleetService fleet, HttpApi http, String host, int port,
             boolean secure) {
@@ -92,13 +94,14 @@ public final class TriadService implements AutoCloseable {
         }
         List<FleetRobot> robots = List.of();
         FleetService fleet = null;
+        TrafficBoard traffic = new TrafficBoard(); // the robots' traffic controls show their waits here (operator page)
         try {
             AccessTokens tokens = AccessTokens.load(o.env(), o.config(), store);
-            robots = connect(models, o);
+            robots = connect(models, o, traffic);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
-            HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https);
+            HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https).showing(traffic);
             int port;
             try {
                 port = http.start(o.host(), o.port());
@@ -106,7 +109,9 @@ public final class TriadService implements AutoCloseable {
                 http.stop();
                 throw ServiceError.startup(bindFailure(o, e));
             }
-            return new TriadService(models, store, tokens, fleet, http, o.host(), port, https != null);
+            TriadService service = new TriadService(models, store, tokens, fleet, http, o.host(), port, https != null);
+            service.traffic = traffic;
+            return service;
         } catch (RuntimeException e) {
             if (fleet != null) {
                 fleet.close();
@@ -124,6 +129,11 @@ public final class TriadService implements AutoCloseable {
         }
     }
 
+    /** Where the robots' traffic controls show their waits (the operator page's traffic section). */
+    TrafficBoard traffic() {
+        return traffic;
+    }
+
     private static String bindFailure(Options o, RuntimeException e) {
         for (Throwable t = e; t != null; t = t.getCause()) {
             if (t instanceof BindException) {
@@ -135,6 +145,11 @@ public final class TriadService implements AutoCloseable {
 
     /** The robots the options name, through the providers on the class path. */
     static List<FleetRobot> connect(ApplicationModels models, Options o) {
+        return connect(models, o, new TrafficBoard());
+    }
+
+    /** The robots the options name; providers whose robots run under traffic control show their waits on {@code traffic}. */
+    static List<FleetRobot> connect(ApplicationModels models, Options o, TrafficBoard traffic) {
         AppSchema schema = models.schema();
         List<RobotPlatformProvider> providers = new ArrayList<>();
         ServiceLoader.load(RobotPlatformProvider.class).forEach(providers::add);
@@ -172,6 +187,11 @@ public final class TriadService implements AutoCloseable {
             @Override
             public SharedWorld world() {
                 return world;
+            }
+
+            @Override
+            public TrafficBoard traffic() {
+                return traffic;
             }
         };
         List<FleetRobot> robots = new ArrayList<>();

@@ -25,11 +25,13 @@ import org.triad.building.traffic.Decision.Waiting;
  *
  * <p>A robot holds what it stands on ({@link TrafficMap#standing}) and its <em>base</em>: the route it is
  * allowed to drive, from the node it last passed to its <em>decision point</em>. It asks for its route one
- * <em>stretch</em> at a time: from its decision point to the next stop node (or the route's end), all
- * resources of the stretch at once or none. A request is granted when every resource it needs has room
- * for it after the robots queued earlier for that resource; otherwise it queues in arrival order, unless
- * queuing would close a cycle of robots waiting for each other, or the resource is blocked by a lost robot
- * or an obstacle: then it is refused with the reason, and the robot's action fails (RefArc re-plans).
+ * <em>stretch</em> at a time: from its decision point to the next stop node (or the route's end; through a
+ * hall for several robots that it would fill, to the stop node after it), all resources of the stretch at
+ * once or none. A request is granted when every resource it needs has room for it after the robots queued
+ * earlier for that resource; otherwise it queues in arrival order, unless queuing would close a cycle of
+ * robots waiting for each other: then it is put ahead of the robots that wait for it, if that keeps the
+ * waits free of cycles, or else refused with the reason, and the robot's action fails (RefArc re-plans).
+ * A request for a resource blocked by a lost robot or an obstacle is refused with the reason.
  *
  * <p>Not thread-safe: one owner (master control's traffic thread) calls it, or callers synchronize.
  * Times are seconds on the given clock (simulated or wall-clock).
@@ -44,6 +46,8 @@ public final class ReservationTable {
     private final Map<Resource, String> blocked = new HashMap<>();
     private final TrafficStats stats;
     private long arrivals;
+    /** Arrival keys are this far apart, so that a request can be put between two queued ones (see {@link #overtaking}). */
+    private static final long SPACING = 1L << 20;
 
     private static final class RobotState {
         final String name;
@@ -71,6 +75,10 @@ public final class ReservationTable {
             Set<Resource> firstBlocking) {
         Request blockedBy(Set<Resource> blocking) {
             return new Request(arrival, robot, stretch, horizon, needed, since, Set.copyOf(blocking));
+        }
+
+        Request arriving(long at) {
+            return new Request(at, robot, stretch, horizon, needed, since, firstBlocking);
         }
     }
 
@@ -106,6 +114,11 @@ public final class ReservationTable {
         return map;
     }
 
+    /** Seconds on the table's clock now. */
+    public double now() {
+        return clock.getAsDouble();
+    }
+
     /** Waiting and holding times observed so far, and the expected wait of a step (the planner's congestion hook). */
     public TrafficStats stats() {
         return stats;
@@ -114,7 +127,8 @@ public final class ReservationTable {
     /**
      * A robot appears standing at {@code node} and holds it (and the areas around it).
      *
-     * @throws IllegalStateException when the robot is already on the map or the node has no room for it
+     * @throws IllegalStateException when the robot is already on the map or the node has no room for it (after the
+     *                               robots waiting for it)
      */
     public void place(String robot, String node) {
         if (robots.containsKey(robot)) {
@@ -125,6 +139,12 @@ public final class ReservationTable {
             if (holders(r).size() >= r.capacity()) {
                 throw new IllegalStateException("robot " + robot + " cannot be placed at node '" + node + "': " + r + " is full (held by "
                         + String.join(", ", holders(r)) + ")");
+            }
+            // a robot appearing where waiting robots were promised room would make them wait for it unchecked (a cycle)
+            List<String> promised = queue.values().stream().filter(w -> w.needed.contains(r)).map(Request::robot).toList();
+            if (holders(r).size() + promised.size() >= r.capacity()) {
+                throw new IllegalStateException("robot " + robot + " cannot be placed at node '" + node + "': " + r + " is promised to "
+                        + String.join(", ", promised) + ", waiting for it");
             }
         }
         RobotState s = new RobotState(robot, node);
@@ -154,9 +174,9 @@ public final class ReservationTable {
             throw new IllegalArgumentException("robot " + robot + "'s route starts at '" + route.get(0) + "' but its decision point is '"
                     + s.decisionPoint() + "'");
         }
-        int end = 1;
-        while (end < route.size() - 1 && !map.isStop(route.get(end))) {
-            end++;
+        int end = nextStop(route, 0);
+        if (end < route.size() - 1 && !keepsRoomToPass(route.get(end), robot)) {
+            end = nextStop(route, end); // don't fill the hall: through it to the next stop node, all or nothing
         }
         List<String> stretch = List.copyOf(route.subList(0, end + 1));
         Set<Resource> needed = new LinkedHashSet<>();
@@ -167,7 +187,7 @@ public final class ReservationTable {
             map.step(route.get(i - 1), route.get(i)); // the horizon must be drivable too
         }
         needed.removeAll(s.holding);
-        Request q = new Request(arrivals++, robot, stretch, List.copyOf(route.subList(end, route.size())), needed, clock.getAsDouble(), Set.of());
+        Request q = new Request(SPACING * ++arrivals, robot, stretch, List.copyOf(route.subList(end, route.size())), needed, clock.getAsDouble(), Set.of());
         Optional<String> blockedWhy = blockedReason(q);
         if (blockedWhy.isPresent()) {
             return new Refused(robot, blockedWhy.get());
@@ -177,12 +197,55 @@ public final class ReservationTable {
         }
         List<String> cycle = cycleThrough(q);
         if (!cycle.isEmpty()) {
+            Optional<Request> ahead = overtaking(q);
+            if (ahead.isPresent()) {
+                q = ahead.get();
+                if (fits(q)) {
+                    return grant(s, q);
+                }
+                cycle = List.of();
+            }
+        }
+        if (!cycle.isEmpty()) {
             return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0), cycle);
         }
         q = q.blockedBy(new LinkedHashSet<>(waitOf(q).blocking()));
         queue.put(q.arrival, q);
         s.pending = q;
         return new Waiting(robot, waitOf(q));
+    }
+
+    /** The index of the first stop node of the route after index {@code from} (or the route's last index). */
+    private int nextStop(List<String> route, int from) {
+        int end = from + 1;
+        while (end < route.size() - 1 && !map.isStop(route.get(end))) {
+            end++;
+        }
+        return end;
+    }
+
+    /**
+     * Whether a robot stopping at {@code node} on its way through still leaves room there for one more robot
+     * (one driving through, one coming out of a dead-end room): a hall for several robots is not filled by
+     * robots waiting in it. A node for one robot cannot keep room, so a robot may wait there as before.
+     */
+    private boolean keepsRoomToPass(String node, String robot) {
+        Resource r = map.node(node);
+        if (r.capacity() < 2) {
+            return true;
+        }
+        int taken = 0;
+        for (String h : holders(r)) {
+            if (!h.equals(robot)) {
+                taken++;
+            }
+        }
+        for (Request w : queue.values()) {
+            if (w.needed.contains(r) && !w.robot.equals(robot)) {
+                taken++;
+            }
+        }
+        return taken + 2 <= r.capacity();
     }
 
     /** Whether {@code node} lies on the robot's base (behind or at its decision point): where it may drive. */
@@ -402,6 +465,63 @@ public final class ReservationTable {
             }
         }
         return out;
+    }
+
+    /**
+     * The request put ahead of queued ones, as late as possible, where the wait-for graph stays free of cycles,
+     * or empty when there is no such place. A robot that the earlier ones wait for (it stands in their way)
+     * goes first instead of being refused: they need it gone, and it needs them to let it pass.
+     */
+    private Optional<Request> overtaking(Request q) {
+        List<Long> keys = new ArrayList<>(queue.keySet());
+        for (int i = keys.size() - 1; i >= 0; i--) {
+            long before = keys.get(i);
+            long after = i == 0 ? 0 : keys.get(i - 1);
+            if (before - after < 2) {
+                continue;
+            }
+            Request moved = q.arriving(after + (before - after) / 2);
+            queue.put(moved.arrival, moved);
+            boolean acyclic = acyclic(waitsFor());
+            queue.remove(moved.arrival);
+            if (acyclic) {
+                return Optional.of(moved);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** Whether the graph has no cycle (depth first, three colours). */
+    private static boolean acyclic(Map<String, Set<String>> g) {
+        Map<String, Integer> colour = new HashMap<>();
+        for (String start : g.keySet()) {
+            if (colour.containsKey(start)) {
+                continue;
+            }
+            Deque<java.util.Iterator<String>> stack = new ArrayDeque<>();
+            Deque<String> path = new ArrayDeque<>();
+            colour.put(start, 1);
+            path.push(start);
+            stack.push(g.getOrDefault(start, Set.of()).iterator());
+            while (!stack.isEmpty()) {
+                java.util.Iterator<String> it = stack.peek();
+                if (it.hasNext()) {
+                    String next = it.next();
+                    Integer c = colour.get(next);
+                    if (c == null) {
+                        colour.put(next, 1);
+                        path.push(next);
+                        stack.push(g.getOrDefault(next, Set.of()).iterator());
+                    } else if (c == 1) {
+                        return false;
+                    }
+                } else {
+                    stack.pop();
+                    colour.put(path.pop(), 2);
+                }
+            }
+        }
+        return true;
     }
 
     /** The cycle of waits queuing {@code q} would close (robot names, q's robot first), or empty. */

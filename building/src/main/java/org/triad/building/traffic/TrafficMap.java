@@ -14,7 +14,7 @@ import org.triad.building.traffic.Resource.Kind;
 /**
  * The building's map as traffic control sees it: nodes (spots a robot stands on), edges (the lanes between
  * two nodes, usable both ways) and areas (a narrow corridor, a doorway, the lift cabin) over several nodes
- * and edges, each a {@link Resource} with a capacity. A node inside no area is a <em>stop node</em>: the
+ * and edges, each a {@link Resource} with a capacity. A node inside no area (zones aside) is a <em>stop node</em>: the
  * only kind of node where a robot may wait (halls, rooms, the spot before a door); a robot never waits
  * inside a corridor, a doorway or the lift. Built once from the application's floor map:
  *
@@ -112,9 +112,9 @@ public final class TrafficMap {
         return areasOf.getOrDefault(nodeOrEdge, List.of());
     }
 
-    /** Whether a robot may wait at this node: it lies in no area. */
+    /** Whether a robot may wait at this node: it lies in no area but zones (a zone is a region robots are admitted to, a floor). */
     public boolean isStop(String node) {
-        return areasOf(node(node)).isEmpty();
+        return areasOf(node(node)).stream().allMatch(a -> a.kind() == Kind.ZONE);
     }
 
     /** What a robot standing at this node occupies: the node and the areas containing it. */
@@ -207,6 +207,16 @@ public final class TrafficMap {
             areas.put(id, new Resource(kind, id, checked(kind.label() + " '" + id + "'", capacity)));
             areaMembers.put(id, List.of(members));
             return this;
+        }
+
+        /** The node ids declared so far (to name an area's members). */
+        public java.util.Set<String> nodeIds() {
+            return Collections.unmodifiableSet(nodes.keySet());
+        }
+
+        /** The edge ids declared so far. */
+        public java.util.Set<String> edgeIds() {
+            return Collections.unmodifiableSet(edges.keySet());
         }
 
         private int checked(String what, int capacity) {

@@ -39,7 +39,7 @@ class ReservationTableTest {
 
     @Test
     void headToHeadOnASingleLaneTheSecondWaitsAtTheHallAndGoesWhenTheFirstIsThrough() {
-        TrafficMap map = Maps.singleLane(2);
+        TrafficMap map = Maps.singleLane(3);
         ReservationTable t = table(map);
         t.place("r1", "hall-w");
         t.place("r2", "hall-e");
@@ -66,6 +66,22 @@ class ReservationTableTest {
         driveBase(t, "r2");
         assertEquals(route("hall-w"), t.base("r2"));
         assertTrue(t.holders(map.area("west").orElseThrow()).isEmpty());
+    }
+
+    @Test
+    void aRobotDoesNotFillAHallOnItsWayThroughItReservesThroughItToTheNextStop() {
+        TrafficMap map = Maps.singleLane(2);
+        ReservationTable t = table(map);
+        t.place("r1", "hall-w");
+        t.place("r2", "hall-e");
+        Granted g1 = assertInstanceOf(Granted.class, t.request("r1", route("hall-w", "c1", "c2", "hall-e", "side-e")));
+        assertEquals(route("hall-w", "c1", "c2", "hall-e", "side-e"), g1.stretch(),
+                "with r2 in hall-e, r1 waiting there too would leave no room to pass: through it to side-e at once");
+        driveBase(t, "r1");
+        assertEquals(Set.of("r2"), t.holders(map.node("hall-e")), "r1 drove through hall-e without stopping");
+        t.place("r3", "side-w");
+        Granted g3 = assertInstanceOf(Granted.class, t.request("r3", route("side-w", "hall-w", "c1", "c2", "hall-e")));
+        assertEquals(route("side-w", "hall-w"), g3.stretch(), "an empty hall-w keeps room after r3: r3 may stop there");
     }
 
     @Test
@@ -100,8 +116,8 @@ class ReservationTableTest {
     }
 
     @Test
-    void threeRobotsInARingWithHallsForTwoAllGoRoundTwice() {
-        ReservationTable t = table(Maps.ring(2));
+    void threeRobotsInARingWithHallsForThreeAllGoRoundTwice() {
+        ReservationTable t = table(Maps.ring(3));
         List<String> ring = route("n1", "m12", "n2", "m23", "n3", "m31", "n1", "m12", "n2", "m23", "n3", "m31", "n1");
         String[] robots = { "r1", "r2", "r3" };
         for (int i = 0; i < 3; i++) {
@@ -157,6 +173,23 @@ class ReservationTableTest {
         assertEquals(List.of("r3"), driveBase(t, "r2").granted().stream().map(Granted::robot).toList());
         driveBase(t, "r3");
         assertEquals(List.of("f2", "f2", "f2"), List.of(t.base("r1").get(0), t.base("r2").get(0), t.base("r3").get(0)));
+    }
+
+    @Test
+    void aRobotTheQueuedOnesWaitForGoesFirstInsteadOfBeingRefused() {
+        TrafficMap map = Maps.lift();
+        ReservationTable t = table(map);
+        t.place("down", "f2");
+        t.place("x1", "f2");
+        t.place("x2", "f2");
+        t.place("up", "f1");
+        Waiting w = assertInstanceOf(Waiting.class, t.request("up", route("f1", "lift-1", "lift-2", "f2")));
+        assertTrue(w.queued().blockers().contains("down"), "f2 is full: up waits for the robots standing there");
+        // down queuing behind up for the lift would close a cycle (up waits for down's place in f2): it rides first
+        Granted g = assertInstanceOf(Granted.class, t.request("down", route("f2", "lift-2", "lift-1", "f1")));
+        assertEquals(route("f2", "lift-2", "lift-1", "f1"), g.stretch());
+        assertEquals(List.of("up"), driveBase(t, "down").granted().stream().map(Granted::robot).toList(), "then up rides into the place down left");
+        assertEquals(Set.of(), Graphs.cycle(t.waitsFor()));
     }
 
     @Test
@@ -265,6 +298,21 @@ class ReservationTableTest {
         assertEquals(30.0, t.expectedWait("f1", "lift-1"));
         t.request("r3", up);
         assertEquals(60.0, t.expectedWait("f1", "lift-1"));
+    }
+
+    @Test
+    void congestionCostsAreTheExpectedWaitInStepsAndABlockedStepIsDear() {
+        TrafficMap map = Maps.singleLane(3);
+        ReservationTable t = table(map);
+        org.triad.runtime.schema.ActionCosts costs = CongestionCosts.of(map, t::expectedWait, 10);
+        java.util.function.Function<String, org.triad.runtime.app.GenericObject> wp = n -> new org.triad.runtime.app.GenericObject(n, "WayPoint", java.util.Map.of());
+        org.triad.runtime.app.GroundAction move = new org.triad.runtime.app.GroundAction("Courier", "move", List.of(wp.apply("hall-w"), wp.apply("c1")));
+        assertEquals(0, costs.extra(move), "a free lane costs nothing extra");
+        t.block(map.area("west").orElseThrow(), "a bed in the corridor");
+        assertEquals(CongestionCosts.BLOCKED, costs.extra(move));
+        assertEquals(0, costs.extra(new org.triad.runtime.app.GroundAction("Courier", "move", List.of(wp.apply("side-w"), wp.apply("c1")))),
+                "not joined on the map: not a move traffic knows");
+        assertThrows(IllegalArgumentException.class, () -> CongestionCosts.of(map, t::expectedWait, 0));
     }
 
     @Test

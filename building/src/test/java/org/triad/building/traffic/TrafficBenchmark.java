@@ -20,8 +20,8 @@ import org.triad.building.traffic.Resource.Kind;
  * The traffic benchmark: fleets of 2, 5, 10 and 20 robots, 8 simulated hours each of random deliveries,
  * guides and patrols between random rooms on two floors of a hospital (per floor a ring of corridors as in
  * the hospital model: wide north and south corridors, single-lane west and east corridors, a fire door,
- * six rooms behind doors for one; a lift for one between the floors), with the reservation table and
- * without it. A kinematic simulation of its own (robots at 1 m/s along the map's edges, 0.5 s steps; the
+ * six rooms behind doors for one; a lift for one between the floors; at most 17 robots admitted to a floor,
+ * a zone), with the reservation table and without it. A kinematic simulation of its own (robots at 1 m/s along the map's edges, 0.5 s steps; the
  * one-building dyn4j simulation is issue #20's): a <em>collision</em> is two robots on a resource for one
  * (more than its capacity) at once; without reservations both then stand 30 s to recover (the jam).
  * A <em>standstill</em> is 60 simulated seconds in which no robot with a task moved.
@@ -30,6 +30,9 @@ import org.triad.building.traffic.Resource.Kind;
  * mvn -B -q -pl building -am test-compile
  * java -cp building/target/classes:building/target/test-classes org.triad.building.traffic.TrafficBenchmark [hours] [seed]
  * </pre>
+ * Options: {@code -Dtraffic.fleets=20,10} (fleet sizes), {@code -Dtraffic.floorZone=N} (robots admitted per floor,
+ * 0 for no limit), {@code -Dtraffic.why} (per run, why requests were refused or timed out), {@code -Dtraffic.debug}
+ * (every robot at each standstill).
  */
 public final class TrafficBenchmark {
     private static final double DT = 0.5;
@@ -38,6 +41,8 @@ public final class TrafficBenchmark {
     private static final double DWELL = 10;
     private static final double WAIT_BOUND = 60;
     private static final double RECOVERY = 30;
+    /** Robots admitted to one floor at once (of its 18 places in halls and rooms, so a full floor keeps one to swap through), 0 for no limit. */
+    private static final int FLOOR_ZONE = Integer.getInteger("traffic.floorZone", 17);
 
     private final TrafficMap map;
     private final Map<String, Double> length = new HashMap<>();
@@ -68,6 +73,20 @@ public final class TrafficBenchmark {
             b.node(p + "lift");
             b.edge(p + "c6", p + "lift");
             length.put(p + "c6-" + p + "lift", 3.0);
+            if (FLOOR_ZONE > 0) { // admission: no more robots on a floor than leave room to pass each other
+                List<String> members = new ArrayList<>();
+                for (String n : b.nodeIds()) {
+                    if (n.startsWith(p)) {
+                        members.add(n);
+                    }
+                }
+                for (String e : b.edgeIds()) {
+                    if (e.startsWith(p)) {
+                        members.add(e);
+                    }
+                }
+                b.area(Kind.ZONE, "floor" + f, FLOOR_ZONE, members.toArray(String[]::new));
+            }
         }
         b.edge("ride", "f1.lift", "f2.lift", 1);
         length.put("ride", RIDE * SPEED);
@@ -142,6 +161,9 @@ public final class TrafficBenchmark {
             double cpuMicrosPerRobotHour, double cpuMicrosPerGrant) {
     }
 
+    /** Lift rides and, for {@code -Dtraffic.why}, why requests were refused or timed out (robot names and floors left out), counted per run. */
+    private static final Map<String, Integer> EVENTS = new HashMap<>();
+
     private Result run(int fleet, double hours, boolean reservations, long seed) {
         Random rnd = new Random(seed);
         double[] now = { 0 };
@@ -208,6 +230,7 @@ public final class TrafficBenchmark {
                             b.baseEnd = g.stretch().size() - 1;
                             grants++;
                         } else if (d instanceof Refused r) {
+                            EVENTS.merge("refused-start " + r.reason().replaceAll("r\\d+", "r").replaceAll("'f\\d\\.", "'"), 1, Integer::sum);
                             b.route = List.of(here);
                             yieldFirst(table, b, here, null, rnd);
                             makeWay(table, bots, b, r, now[0], rnd);
@@ -233,6 +256,9 @@ public final class TrafficBenchmark {
                 b.onEdge += SPEED * DT;
                 moved = true;
                 if (b.onEdge >= len(here, next)) {
+                    if (map.edge(here, next).orElseThrow().id().equals("ride")) {
+                        EVENTS.merge("rides", 1, Integer::sum);
+                    }
                     b.onEdge = 0;
                     b.at++;
                     if (table != null) {
@@ -256,6 +282,7 @@ public final class TrafficBenchmark {
                             b.baseEnd += g.stretch().size() - 1;
                             grants++;
                         } else if (d instanceof Refused r) {
+                            EVENTS.merge("refused-ahead " + r.reason().replaceAll("r\\d+", "r").replaceAll("'f\\d\\.", "'"), 1, Integer::sum);
                             truncate(table, b, now[0], rnd);
                             makeWay(table, bots, b, r, now[0], rnd);
                         } else {
@@ -265,6 +292,7 @@ public final class TrafficBenchmark {
                 }
                 for (Wait w : table.overdue(WAIT_BOUND)) {
                     Bot b = bots.get(Integer.parseInt(w.robot().substring(1)));
+                    EVENTS.merge("overdue " + w.blocking().stream().map(x -> x.kind().toString()).sorted().distinct().toList(), 1, Integer::sum);
                     table.cancel(b.name).granted().forEach(g -> {
                         Bot o = bots.get(Integer.parseInt(g.robot().substring(1)));
                         o.baseEnd += g.stretch().size() - 1;
@@ -391,7 +419,9 @@ public final class TrafficBenchmark {
             String here = b.route.get(b.at);
             Set<Resource> occ = b.onEdge > 0 ? map.step(here, b.route.get(b.at + 1)) : map.standing(here);
             for (Resource r : occ) {
-                on.computeIfAbsent(r, k -> new ArrayList<>()).add(b);
+                if (r.kind() != Kind.ZONE) { // a floor over its admission limit is crowded, not a contact
+                    on.computeIfAbsent(r, k -> new ArrayList<>()).add(b);
+                }
             }
         }
         int fresh = 0;
@@ -416,14 +446,20 @@ public final class TrafficBenchmark {
         long seed = args.length > 1 ? Long.parseLong(args[1]) : 42;
         TrafficBenchmark bench = new TrafficBenchmark();
         System.out.printf(Locale.ROOT, "traffic benchmark: %.1f simulated hours per fleet, seed %d, kinematic simulation (see javadoc)%n", hours, seed);
-        System.out.printf(Locale.ROOT, "%-6s | %-12s | %10s | %11s | %6s | %7s | %-26s | %-20s | %-20s | %-20s | %12s | %11s%n", "robots",
-                "reservations", "collisions", "standstills", "cycles", "tasks/h", "wait per task med/p95/max", "lift med/p95/max",
+        System.out.printf(Locale.ROOT, "%-6s | %-12s | %10s | %11s | %6s | %7s | %11s | %-26s | %-20s | %-20s | %-20s | %12s | %11s%n", "robots",
+                "reservations", "collisions", "standstills", "cycles", "tasks/h", "lift rides/h", "wait per task med/p95/max", "lift med/p95/max",
                 "door med/p95/max", "corridor med/p95/max", "cpu us/robot-h", "cpu us/grant");
-        for (int fleet : new int[] { 2, 5, 10, 20 }) {
+        int[] fleets = System.getProperty("traffic.fleets") == null ? new int[] { 2, 5, 10, 20 }
+                : java.util.Arrays.stream(System.getProperty("traffic.fleets").split(",")).mapToInt(Integer::parseInt).toArray();
+        for (int fleet : fleets) {
             for (boolean res : new boolean[] { true, false }) {
+                EVENTS.clear();
                 Result r = bench.run(fleet, hours, res, seed);
-                System.out.printf(Locale.ROOT, "%-6d | %-12s | %10d | %11d | %6d | %7.1f | %-26s | %-20s | %-20s | %-20s | %12.1f | %11.1f%n", fleet,
-                        res ? "yes" : "no", r.collisions(), r.standstills(), r.cycles(), r.tasksPerHour(), res ? q(r.taskWaits()) : "-",
+                if (System.getProperty("traffic.why") != null) {
+                    EVENTS.entrySet().stream().filter(e -> !e.getKey().equals("rides")).sorted((a, c) -> c.getValue() - a.getValue()).limit(10).forEach(e -> System.out.println("   " + e.getValue() + " " + e.getKey()));
+                }
+                System.out.printf(Locale.ROOT, "%-6d | %-12s | %10d | %11d | %6d | %7.1f | %11.1f | %-26s | %-20s | %-20s | %-20s | %12.1f | %11.1f%n", fleet,
+                        res ? "yes" : "no", r.collisions(), r.standstills(), r.cycles(), r.tasksPerHour(), EVENTS.getOrDefault("rides", 0) / hours, res ? q(r.taskWaits()) : "-",
                         res ? q(r.waits().get(Kind.LIFT)) : "-", res ? q(r.waits().get(Kind.DOOR)) : "-",
                         res ? q(r.waits().get(Kind.CORRIDOR)) : "-", r.cpuMicrosPerRobotHour(), r.cpuMicrosPerGrant());
             }

@@ -25,6 +25,14 @@ class TrafficMapTest {
     }
 
     @Test
+    void aZoneAdmitsRobotsToARegionButAHallInItIsStillAStop() {
+        TrafficMap map = TrafficMap.builder().node("hall", 2).node("ward").edge("hall", "ward").area(Kind.ZONE, "floor1", 1, "hall", "ward", "hall-ward")
+                .build();
+        assertTrue(map.isStop("hall"), "a robot may wait in a hall of its floor");
+        assertEquals(Set.of(map.node("hall"), map.area("floor1").orElseThrow()), map.standing("hall"), "standing on the floor holds its zone");
+    }
+
+    @Test
     void anEdgeWhoseNodeDoesNotExistIsAClearError() {
         TrafficMapException e = assertThrows(TrafficMapException.class,
                 () -> TrafficMap.builder().node("a").edge("a", "b").build());

@@ -25,16 +25,31 @@ public final class GoalSolver {
 	private final PddlTranslator translator;
 	private final PddlPlanner planner;
 	private final Duration timeout;
+	/** Extra costs of actions (congestion), or null for the shortest plan. */
+	private final ActionCosts costs;
 
 	public GoalSolver(AppSchema schema) {
 		this(schema, new TriadEngine(), Duration.ofSeconds(30));
 	}
 
 	public GoalSolver(AppSchema schema, PddlPlanner planner, Duration timeout) {
+		this(schema, planner, timeout, null);
+	}
+
+	private GoalSolver(AppSchema schema, PddlPlanner planner, Duration timeout, ActionCosts costs) {
 		this.schema = schema;
 		this.translator = new PddlTranslator(schema);
 		this.planner = planner;
 		this.timeout = timeout;
+		this.costs = costs;
+	}
+
+	/**
+	 * This solver asking for the plan of least cost, every action costing {@code 1 + costs.extra(action)}
+	 * (the congestion hook: a move's expected wait), instead of the shortest plan.
+	 */
+	public GoalSolver withCosts(ActionCosts costs) {
+		return new GoalSolver(schema, planner, timeout, java.util.Objects.requireNonNull(costs, "costs"));
 	}
 
 	/** A plan, or the reason there is none. */
@@ -56,7 +71,13 @@ public final class GoalSolver {
 	public Outcome plan(GoalSchema goal, Map<String, Object> binding, State from) {
 		try {
 			PddlTranslator.Task task = translator.translate(from, goal, binding);
-			SolveResult result = planner.solve(task.domain(), task.problem(), timeout);
+			SolveResult result;
+			if (costs == null) {
+				result = planner.solve(task.domain(), task.problem(), timeout);
+			} else {
+				ActionCosts.Costed costed = ActionCosts.apply(task, costs);
+				result = planner.solve(costed.domain(), costed.problem(), timeout);
+			}
 			if (!result.unreachable().isEmpty()) {
 				return new Outcome(null, "no plan: " + new UnreachableGoalText(schema, task.names())
 						.describe(UnreachableGoalText.goalLabel(goal, binding), result.unreachable()));

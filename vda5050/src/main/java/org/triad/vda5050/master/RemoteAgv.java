@@ -6,6 +6,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.Function;
@@ -68,6 +71,16 @@ public final class RemoteAgv implements FailureExplaining {
     private long orderToFirstState = -1;
     /** An order this master gave up on (silence, a broken connection, a timeout) that the AGV may still be running. */
     private String abandonedOrder;
+    /** The traffic control the AGV last drove under (it stands on its map), or null. */
+    private TrafficControl traffic;
+    /** Whether a {@link #driveRoute} call runs (it tells traffic control of a lost connection itself). */
+    private boolean drivingRoute;
+    /** Checks, one reconnect grace after a last will, whether an idle AGV came back (a daemon shared by every AGV). */
+    private static final ScheduledExecutorService IDLE_WATCH = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "triad-traffic-idle-watch");
+        t.setDaemon(true);
+        return t;
+    });
 
     RemoteAgv(MqttLink link, String manufacturer, String serialNumber, VdaTimeouts timeouts, java.util.function.Consumer<String> log) {
         this.link = link;
@@ -229,6 +242,23 @@ public final class RemoteAgv implements FailureExplaining {
             lastFailure = null;
             orderToFirstState = -1;
         }
+        synchronized (lock) {
+            this.traffic = traffic;
+            drivingRoute = true;
+        }
+        try {
+            return driveRouteUnder(route, traffic, call);
+        } finally {
+            synchronized (lock) {
+                drivingRoute = false;
+                if (down()) {
+                    watchIdle(connectionNanos); // it went down as the call ended: the call may not have told traffic control
+                }
+            }
+        }
+    }
+
+    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call) {
         if (!traffic.place(name(), route.get(0)) || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
                 return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
@@ -485,10 +515,40 @@ public final class RemoteAgv implements FailureExplaining {
                 connectionNanos = System.nanoTime();
                 if (connection == ConnectionState.ONLINE) {
                     screen.reset();
+                } else if (traffic != null && !drivingRoute) {
+                    watchIdle(connectionNanos);
                 }
             }
             lock.notifyAll();
         }
+    }
+
+    /**
+     * An AGV standing on the traffic map without a route running reported its last will (or OFFLINE): if it is
+     * still down one reconnect grace later, traffic control is told it is lost where it stands, so its base
+     * is freed and nobody is driven into it. Call with the lock held.
+     */
+    private void watchIdle(long since) {
+        if (traffic == null) {
+            return;
+        }
+        TrafficControl watched = traffic;
+        IDLE_WATCH.schedule(() -> {
+            String why;
+            synchronized (lock) {
+                // the same last will, still unanswered by a state, no route running, and this master connected to see it
+                if (connectionNanos != since || !down() || drivingRoute || !link.isConnected()
+                        || System.nanoTime() - Math.max(connectionNanos, masterReconnectNanos) < seconds(timeouts.reconnectGraceSeconds())) {
+                    if (connectionNanos == since && down() && !drivingRoute) {
+                        watchIdle(since); // the master itself reconnected meanwhile: its grace starts again
+                    }
+                    return;
+                }
+                why = String.format(Locale.ROOT, "%s%s while idle, not back within the reconnect grace of %.1f s", connection,
+                        connection == ConnectionState.CONNECTIONBROKEN ? " (its last will)" : "", timeouts.reconnectGraceSeconds());
+            }
+            watched.lost(name(), why);
+        }, seconds(timeouts.reconnectGraceSeconds()) + 50_000_000L, TimeUnit.NANOSECONDS);
     }
 
     void masterReconnected() {

@@ -14,6 +14,9 @@ import org.triad.building.traffic.Decision.Refused;
 import org.triad.building.traffic.ReservationTable;
 import org.triad.building.traffic.ReservationTable.Changes;
 import org.triad.building.traffic.Resource;
+import org.triad.building.traffic.CongestionCosts;
+import org.triad.building.traffic.TrafficBoard;
+import org.triad.runtime.schema.ActionCosts;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.building.traffic.Wait;
 
@@ -57,6 +60,16 @@ public final class TrafficControl {
     /** Every robot waiting for a resource, with its reason and since when: what the operator page shows. */
     public synchronized List<Wait> waits() {
         return table.waits();
+    }
+
+    /** The waits as the operator page shows them (see {@code BuildingContext.traffic()}: {@code context.traffic().add(traffic::waiting)}). */
+    public synchronized List<TrafficBoard.Waiting> waiting() {
+        return TrafficBoard.waiting(table);
+    }
+
+    /** Planning costs from this traffic's expected waits ({@code GoalSolver.withCosts}); see {@code CongestionCosts}. */
+    public ActionCosts congestion(double secondsPerStep) {
+        return CongestionCosts.of(table.map(), (a, b) -> read(t -> t.expectedWait(a, b)), secondsPerStep);
     }
 
     /** Puts the robot on the map where it stands, unless it is there already; false when its node has no room. */
@@ -121,7 +134,7 @@ public final class TrafficControl {
 
     /** The robot is down where it is (its last will, a rogue stopped): nobody is sent into its place. */
     synchronized void lost(String robot, String why) {
-        if (table.robots().contains(robot)) {
+        if (table.robots().contains(robot) && !table.isLost(robot)) { // once: a second call would forget the lane it stands on
             log.accept("traffic: " + robot + " lost: " + why);
             deliver(table.lost(robot, why));
         }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -190,6 +191,149 @@ class TrafficVdaTest {
         assertFalse(r2.driveRoute(List.of("c4", "c1", "c2"), traffic), "not driven into the lost robot");
         assertTrue(r2.lastFailure().orElseThrow().contains("corridor 'west' is blocked by robot triad/courier-1, lost there (CONNECTIONBROKEN"),
                 r2.lastFailure().orElseThrow());
+        assertTrue(r2.driveRoute(List.of("c4", "c5", "c6"), traffic), "the others go on elsewhere: " + r2.lastFailure() + "\n" + log);
+    }
+
+    /** The east passage of the ring (x 21.6..24 m, y 7.4..13 m), the lift's cabin in {@link #withLift}. */
+    private static boolean inEastPassage(AgvState s) {
+        return s.agvPosition() != null && s.agvPosition().x() > 21.6 && s.agvPosition().y() > 7.4 && s.agvPosition().y() < 13;
+    }
+
+    /**
+     * The ring with a lift for one instead of the east corridor: the simulated courier's floor has no second
+     * floor (the two-floor building is issue #20's), so the passage from c6 to c3 stands in for the ride, a
+     * resource of kind LIFT the robots queue for like any lift.
+     */
+    static TrafficMap withLift() {
+        TrafficMap.Builder b = TrafficMap.builder();
+        for (String c : List.of("c1", "c2", "c3", "c4", "c5", "c6")) {
+            b.node(c, 2);
+        }
+        b.node("lobby", 3);
+        b.edge("c1", "c2").edge("c2", "c3").edge("c4", "c5").edge("c5", "c6").edge("c1", "c4").edge("c3", "c6");
+        b.area(Kind.CORRIDOR, "west", 1, "c1-c4").area(Kind.LIFT, "lift", 1, "c3-c6").area(Kind.DOOR, "fireDoor", 1, "c2-c3");
+        b.edge("lobby", "c4").area(Kind.DOOR, "lobbyDoor", 1, "lobby-c4");
+        return b.build();
+    }
+
+    /**
+     * A ring of three corridors for one between three junctions for one (c1, c4, c6): west c1-c4, south c4-c5-c6,
+     * north-east c6-c3-c2-c1; the lobby and ward2 are side rooms to get out of the way into.
+     */
+    static TrafficMap threeCorridors() {
+        TrafficMap.Builder b = TrafficMap.builder();
+        for (String c : List.of("c1", "c2", "c3", "c4", "c5", "c6")) {
+            b.node(c, 1);
+        }
+        b.node("lobby", 3).node("ward2", 1);
+        b.edge("c1", "c2").edge("c2", "c3").edge("c4", "c5").edge("c5", "c6").edge("c1", "c4").edge("c3", "c6").edge("lobby", "c4").edge("ward2", "c6");
+        b.area(Kind.CORRIDOR, "west", 1, "c1-c4").area(Kind.CORRIDOR, "south", 1, "c4-c5", "c5", "c5-c6")
+                .area(Kind.CORRIDOR, "northEast", 1, "c3-c6", "c3", "c2-c3", "c2", "c1-c2");
+        return b.build();
+    }
+
+    @Test
+    void twoRobotsForTheLiftOneRidesTheOtherWaitsAndRidesNext() throws Exception {
+        TrafficControl traffic = new TrafficControl(withLift(), 120, log::add);
+        RemoteAgv r1 = agv("courier-1", false);
+        RemoteAgv r2 = agv("courier-2", false);
+        assertTrue(r1.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), r1.lastFailure() + "\n" + log);
+        assertTrue(r2.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), r2.lastFailure() + "\n" + log);
+        Resource lift = traffic.read(t -> t.map().area("lift").orElseThrow());
+        AtomicBoolean both = new AtomicBoolean();
+        List<String> arrivals = new CopyOnWriteArrayList<>();
+        AtomicBoolean sampling = new AtomicBoolean(true);
+        Future<?> sampler = pool.submit(() -> {
+            while (sampling.get()) {
+                AgvState s1 = r1.state().orElseThrow();
+                AgvState s2 = r2.state().orElseThrow();
+                both.compareAndSet(false, inEastPassage(s1) && inEastPassage(s2));
+                for (AgvState s : List.of(s1, s2)) {
+                    if ("c3".equals(s.lastNodeId()) && !arrivals.contains(s.serialNumber())) {
+                        arrivals.add(s.serialNumber());
+                    }
+                }
+                Thread.sleep(10);
+            }
+            return null;
+        });
+        Future<Boolean> first = pool.submit(() -> r1.driveRoute(List.of("c6", "c3", "c2"), traffic));
+        assertTrue(waitFor(() -> traffic.read(t -> t.holders(lift).contains("triad/courier-1")), 60), "courier-1 got the lift\n" + log);
+        Future<Boolean> second = pool.submit(() -> r2.driveRoute(List.of("c6", "c3"), traffic));
+        assertTrue(waitFor(() -> traffic.waits().stream().anyMatch(w -> w.robot().equals("triad/courier-2") && w.reason().contains("lift 'lift'"))
+                || !traffic.read(t -> t.holders(lift).contains("triad/courier-1")), 60), "courier-2 queued for the lift\n" + log);
+        assertTrue(first.get(120, TimeUnit.SECONDS), r1.lastFailure() + "\n" + log);
+        assertTrue(second.get(120, TimeUnit.SECONDS), r2.lastFailure() + "\n" + log);
+        sampling.set(false);
+        sampler.get(10, TimeUnit.SECONDS);
+        assertEquals(List.of("courier-1", "courier-2"), arrivals, "they rode in the order they asked");
+        assertFalse(both.get(), "two robots were in the lift at once");
+        assertEquals(1, (int) traffic.read(t -> t.stats().waits(Kind.LIFT).size()), "courier-2 waited for the lift, then rode\n" + log);
+        assertEquals(0, (int) traffic.read(t -> t.holders(lift).size()), "the lift is free again");
+    }
+
+    @Test
+    void threeRobotsInACycleOfThreeCorridorsDoNotDeadlockTheOneRefusedMakesWayAndAllArrive() throws Exception {
+        TrafficControl traffic = new TrafficControl(threeCorridors(), 120, log::add);
+        RemoteAgv a = agv("courier-1", false);
+        RemoteAgv b = agv("courier-2", false);
+        RemoteAgv c = agv("courier-3", false);
+        assertTrue(a.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), a.lastFailure() + "\n" + log);
+        assertTrue(b.driveRoute(List.of("lobby", "c4", "c1"), traffic), b.lastFailure() + "\n" + log);
+        assertTrue(c.driveRoute(List.of("lobby", "c4"), traffic), c.lastFailure() + "\n" + log);
+        // each wants the next junction round the ring, where another stands: courier-3's wait would close a cycle of three
+        Future<Boolean> first = pool.submit(() -> a.driveRoute(List.of("c6", "c3", "c2", "c1"), traffic));
+        assertTrue(waitFor(() -> traffic.waits().size() == 1, 60), "courier-1 waits for c1\n" + log);
+        Future<Boolean> second = pool.submit(() -> b.driveRoute(List.of("c1", "c4", "lobby"), traffic));
+        assertTrue(waitFor(() -> traffic.waits().size() == 2, 60), "courier-2 waits for c4\n" + log);
+        assertFalse(c.driveRoute(List.of("c4", "c5", "c6"), traffic), "refused, not queued in a cycle");
+        String why = c.lastFailure().orElseThrow();
+        assertTrue(why.contains("deadlock avoided: triad/courier-3 would wait for triad/courier-1"), why);
+        assertEquals(Set.of(), cycle(traffic.read(t -> t.waitsFor())));
+        // RefArc re-plans: out of the way into the lobby first, then on to c6
+        assertTrue(c.driveRoute(List.of("c4", "lobby"), traffic), c.lastFailure() + "\n" + log);
+        assertTrue(c.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), c.lastFailure() + "\n" + log);
+        assertTrue(first.get(180, TimeUnit.SECONDS), a.lastFailure() + "\n" + log);
+        assertTrue(second.get(180, TimeUnit.SECONDS), b.lastFailure() + "\n" + log);
+        assertEquals(List.of("c1", "lobby", "c6"), List.of(a.state().orElseThrow().lastNodeId(), b.state().orElseThrow().lastNodeId(),
+                c.state().orElseThrow().lastNodeId()));
+        assertTrue(traffic.waits().isEmpty());
+    }
+
+    /** A robot on a cycle of the wait-for graph, or none (depth first). */
+    private static Set<String> cycle(java.util.Map<String, Set<String>> g) {
+        for (String start : g.keySet()) {
+            java.util.Deque<String> todo = new java.util.ArrayDeque<>(g.get(start));
+            Set<String> seen = new java.util.HashSet<>();
+            while (!todo.isEmpty()) {
+                String n = todo.pop();
+                if (n.equals(start)) {
+                    return Set.of(start);
+                }
+                if (seen.add(n)) {
+                    todo.addAll(g.getOrDefault(n, Set.of()));
+                }
+            }
+        }
+        return Set.of();
+    }
+
+    @Test
+    void aRobotThatDiesWhileIdleIsLostWhereItStandsAfterItsLastWillAndNotDrivenInto() throws Exception {
+        TrafficControl traffic = new TrafficControl(hospital(1), 60, log::add);
+        RemoteAgv r2 = agv("courier-2", false);
+        try (AgvProcess dying = AgvProcess.start(broker.url(), "courier-1", 5, Path.of("target", "vda5050", "traffic"))) {
+            RemoteAgv r1 = master.agv("courier-1");
+            assertTrue(waitFor(() -> r1.state().isPresent(), 120), "its own JVM came up\n" + dying.output());
+            assertTrue(r1.driveRoute(List.of("lobby", "c4", "c1"), traffic), r1.lastFailure() + "\n" + log + "\n" + dying.output());
+            dying.kill(); // idle at c1: no route running to notice
+            assertTrue(waitFor(() -> traffic.read(t -> t.isLost("triad/courier-1")), 60), "lost after its last will and the grace\n" + log);
+        }
+        assertTrue(traffic.read(t -> t.holding("triad/courier-1")).stream().allMatch(r -> r.id().equals("c1")), "it holds only where it stands");
+        assertTrue(r2.driveRoute(List.of("lobby", "c4"), traffic), r2.lastFailure() + "\n" + log);
+        assertFalse(r2.driveRoute(List.of("c4", "c1", "c2"), traffic), "not driven into the lost robot");
+        String why = r2.lastFailure().orElseThrow();
+        assertTrue(why.contains("node 'c1' is blocked by robot triad/courier-1, lost there (CONNECTIONBROKEN (its last will) while idle"), why);
         assertTrue(r2.driveRoute(List.of("c4", "c5", "c6"), traffic), "the others go on elsewhere: " + r2.lastFailure() + "\n" + log);
     }
 
