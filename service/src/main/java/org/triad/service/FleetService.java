@@ -57,7 +57,11 @@ public final class FleetService implements AutoCloseable {
     private final TaskStore store;
     private final GoalSolver estimator;
     private final Clock clock;
-    private final Map<String, RobotLane> lanes = new LinkedHashMap<>();
+    /** The robots by name, in fleet order; replaced as a whole when a robot joins (readers take the map they find). */
+    private volatile Map<String, RobotLane> lanes = Map.of();
+    /** Robots that announced themselves and cannot be used, with the reason (shown to the operator). */
+    private final Map<String, String> refusedRobots = java.util.Collections.synchronizedMap(new LinkedHashMap<>());
+    private final GoalPlanner goalPlanner;
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
     private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
@@ -106,10 +110,12 @@ public final class FleetService implements AutoCloseable {
         this.clock = clock;
         this.lease = lease;
         this.claims = new Claims(catalog.schema());
-        GoalPlanner goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
+        this.goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
+        Map<String, RobotLane> first = new LinkedHashMap<>();
         for (FleetRobot r : robots) {
-            lanes.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
+            first.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
         }
+        lanes = java.util.Collections.unmodifiableMap(first);
         if (lease.holds()) {
             synchronized (lock) {
                 recover();
@@ -380,8 +386,83 @@ public final class FleetService implements AutoCloseable {
     }
 
     public List<RobotView> robots() {
-        return lanes.values().stream().map(this::view).toList();
+        List<RobotView> out = new ArrayList<>(lanes.values().stream().map(this::view).toList());
+        Map<String, String> refused;
+        synchronized (refusedRobots) {
+            refused = new LinkedHashMap<>(refusedRobots);
+        }
+        refused.forEach((name, why) -> out.add(refusedView(name, why)));
+        return out;
     }
+
+    private static RobotView refusedView(String name, String why) {
+        return new RobotView(name, false, null, null, List.of(), 0, false, "refused: " + why, "refused", null, null);
+    }
+
+    // ---- robots that come and go (FleetChanges, through TriadService) ----------------------------
+
+    /** Whether the fleet has a robot of this name (one that left included). */
+    public boolean hasRobot(String name) {
+        return lanes.containsKey(name);
+    }
+
+    /**
+     * A robot that came while the service runs gets a lane of its own and is dispatched to from now on;
+     * for a robot of the fleet that left, this says it is back.
+     */
+    public void join(FleetRobot robot) {
+        RobotLane lane;
+        boolean back;
+        synchronized (lock) {
+            if (!running) {
+                return;
+            }
+            refusedRobots.remove(robot.name());
+            lane = lanes.get(robot.name());
+            back = lane != null;
+            if (lane == null) {
+                lane = new RobotLane(robot, goalPlanner, this::onStatus);
+                Map<String, RobotLane> more = new LinkedHashMap<>(lanes);
+                more.put(robot.name(), lane);
+                lanes = java.util.Collections.unmodifiableMap(more);
+            } else {
+                lane.back();
+            }
+            lock.notifyAll();
+        }
+        System.err.println("triad serve: robot " + robot.name() + (back ? " is back" : " joined the fleet"));
+        publish(new LiveEvent("robot", view(lane)));
+    }
+
+    /**
+     * The platform reports a robot gone for {@code reason} (the true cause): it gets no task until it is
+     * back, and the task it runs is stopped at its next step and ends aborted with that cause and a
+     * remote-operation request (the robot may still hold what the task took, so the operator decides).
+     */
+    public void leave(String name, String reason) {
+        RobotLane lane = lanes.get(name);
+        if (lane == null) {
+            return;
+        }
+        synchronized (lock) {
+            lane.gone(reason);
+            lane.stopAborting("robot " + name + " is gone: " + reason);
+        }
+        System.err.println("triad serve: robot " + name + " is gone: " + reason);
+        publish(new LiveEvent("robot", view(lane)));
+    }
+
+    /** Something announced itself as a robot and cannot be used, for {@code reason}: shown to the operator, never dispatched to. */
+    public void refuseRobot(String name, String reason) {
+        if (lanes.containsKey(name)) {
+            leave(name, "refused: " + reason);
+            return;
+        }
+        refusedRobots.put(name, reason);
+        System.err.println("triad serve: robot " + name + " refused: " + reason);
+        publish(new LiveEvent("robot", refusedView(name, reason)));
+    }
+
 
     public Optional<FloorMap> floor(String robot) {
         RobotLane lane = lanes.get(robot);
@@ -398,6 +479,9 @@ public final class FleetService implements AutoCloseable {
             throw new ServiceError(404, "not-found", "no robot '" + robot + "'; the fleet has " + lanes.keySet());
         }
         synchronized (lock) {
+            if (online && lane.isGone()) {
+                throw new ServiceError(409, "robot-gone", "robot " + robot + " is " + lane.offlineReason() + "; it comes back when its platform reports it again");
+            }
             lane.setOnline(online);
             if (!online) {
                 lane.stop("robot " + robot + " taken offline by the operator");
@@ -662,6 +746,7 @@ public final class FleetService implements AutoCloseable {
         }
         boolean last = status instanceof Status.TaskCompleted || status instanceof Status.TaskAborted;
         String stop = lane.stopReason().orElse(null);
+        boolean stopAborts = lane.stopAborts();
         Instant now = clock.instant();
         try {
             if (LEASE_LOST.equals(stop)) {
@@ -674,13 +759,15 @@ public final class FleetService implements AutoCloseable {
             } else if (status instanceof Status.TaskAborted a) {
                 if (stop != null && stop.startsWith("cancelled")) {
                     durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.CANCELLED, lane.name(), stop, null, now));
-                } else if (stop != null) {
+                } else if (stop != null && !stopAborts) {
                     String[] interrupted = { "interrupted", "interrupted: " + stop + "; queued again" };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, interrupted), TaskState.QUEUED, null, stop, null, now));
                 } else {
-                    String[] request = { "remote_operation", "remote operation requested: " + a.reason() };
-                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), a.reason(),
-                            new String[] { a.goal().describe(), a.reason() }, now));
+                    // a robot that is gone: its true cause, whatever step RefArc was at when it noticed
+                    String cause = stopAborts && stop != null && !a.reason().contains(stop) ? stop + " (" + a.reason() + ")" : a.reason();
+                    String[] request = { "remote_operation", "remote operation requested: " + cause };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), cause,
+                            new String[] { a.goal().describe(), cause }, now));
                 }
             } else {
                 durably(() -> store.insertEvent(taskId, event[0], lane.name(), event[1], now));
@@ -691,7 +778,7 @@ public final class FleetService implements AutoCloseable {
         } finally {
             if (last) {
                 synchronized (lock) {
-                    if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && dispatching) {
+                    if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && !stopAborts && dispatching) {
                         queue.add(taskId);
                     }
                     Instant began = dispatchedAt.remove(taskId);
@@ -844,8 +931,18 @@ public final class FleetService implements AutoCloseable {
     }
 
     private RobotView view(RobotLane l) {
-        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent(),
-                l.online() ? null : l.offlineReason());
+        FleetRobot r = l.robot();
+        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), r.floor().isPresent(),
+                l.online() ? null : l.offlineReason(), l.isGone() ? "gone" : l.online() ? "online" : "offline", quietly(r::pose), quietly(r::battery));
+    }
+
+    /** What a platform reports, or null when it reports nothing or fails to (a view never fails for it). */
+    private static <T> T quietly(java.util.function.Supplier<Optional<T>> read) {
+        try {
+            return read.get().orElse(null);
+        } catch (RuntimeException e) {
+            return null;
+        }
     }
 
     private TaskView publishTask(long id, boolean withEvents) {

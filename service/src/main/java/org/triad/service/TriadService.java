@@ -94,9 +94,11 @@ public final class TriadService implements AutoCloseable {
         FleetService fleet = null;
         try {
             AccessTokens tokens = AccessTokens.load(o.env(), o.config(), store);
-            robots = connect(models, o);
+            FleetRoster roster = new FleetRoster();
+            robots = connect(models, o, roster);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
+            roster.attach(fleet);
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
             HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https);
             int port;
@@ -134,7 +136,7 @@ public final class TriadService implements AutoCloseable {
     }
 
     /** The robots the options name, through the providers on the class path. */
-    static List<FleetRobot> connect(ApplicationModels models, Options o) {
+    static List<FleetRobot> connect(ApplicationModels models, Options o, FleetRoster roster) {
         AppSchema schema = models.schema();
         List<RobotPlatformProvider> providers = new ArrayList<>();
         ServiceLoader.load(RobotPlatformProvider.class).forEach(providers::add);
@@ -155,6 +157,7 @@ public final class TriadService implements AutoCloseable {
             start = State.builder().build(); // no situation in the models: the robots' observations fill the world
         }
         SharedWorld world = new SharedWorld(schema, start);
+        roster.building(world);
         if (o.situation() != null) {
             world.startAs(start); // the user named the building's situation: robots join it
         }
@@ -172,6 +175,11 @@ public final class TriadService implements AutoCloseable {
             @Override
             public SharedWorld world() {
                 return world;
+            }
+
+            @Override
+            public org.triad.refarc.fleet.FleetChanges changes() {
+                return roster;
             }
         };
         List<FleetRobot> robots = new ArrayList<>();

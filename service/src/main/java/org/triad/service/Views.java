@@ -17,8 +17,13 @@ public final class Views {
     public record EventView(long id, String at, String kind, String robot, String text) {
     }
 
-    /** {@code offlineReason}: why the robot is out of dispatch (the operator, or tasks aborted on it in a row), or null. */
-    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason) {
+    /**
+     * {@code offlineReason}: why the robot is out of dispatch (the operator, tasks aborted on it in a row, its
+     * platform reporting it gone, or refused when it announced itself), or null; {@code presence}: online,
+     * offline (out of dispatch), gone or refused; {@code pose} and {@code battery} as its platform reports them, or null.
+     */
+    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason,
+            String presence, org.triad.refarc.fleet.Pose pose, org.triad.refarc.fleet.Battery battery) {
     }
 
     public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,

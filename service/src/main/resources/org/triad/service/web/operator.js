@@ -88,11 +88,15 @@
       cards.set(r.name, card);
     }
     const plan = el("ol", { class: "plan" }, r.plan.map((a, i) => el("li", { class: i + 1 === r.step ? "current" : "" }, a)));
+    // gone (its platform says so) and refused robots come back by themselves, not by the operator's button
+    const state = r.presence === "gone" || r.presence === "refused" ? r.presence : r.online ? (r.task ? "busy" : "idle") : "offline";
+    card.root.dataset.presence = r.presence || "";
     card.info.replaceChildren(
-      el("div", {}, el("span", { class: "robot-state" }, r.online ? (r.task ? "busy" : "idle") : "offline"),
+      el("div", {}, el("span", { class: "robot-state" }, state),
         r.task ? [" with ", el("span", { class: "robot-task" }, "#" + r.task + " " + r.call)] : "",
-        " ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
-          r.online ? "Take offline" : "Put online")),
+        r.battery ? [" ", el("span", { class: "robot-battery" + (r.battery.charging ? " charging" : "") }, "battery " + Math.round(r.battery.charge) + " %" + (r.battery.charging ? ", charging" : ""))] : "",
+        r.presence === "refused" || r.presence === "gone" ? "" : [" ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
+          r.online ? "Take offline" : "Put online")]),
       r.offlineReason ? el("div", { class: "robot-offline-reason" }, r.offlineReason) : "",
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
   }

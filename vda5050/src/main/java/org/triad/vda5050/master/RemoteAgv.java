@@ -153,6 +153,21 @@ public final class RemoteAgv implements FailureExplaining {
         return (connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= stateNanos;
     }
 
+    /**
+     * For how long the AGV has been down as far as this master can tell (see {@link #awaitOnline()}), in
+     * seconds; 0 while it is not, and while this master is disconnected itself (the AGV cannot be judged
+     * then), counting from this master's reconnection when that came later (after a broker restart the
+     * AGV's ONLINE follows ours).
+     */
+    public double secondsDown() {
+        synchronized (lock) {
+            if (!down() || !link.isConnected()) {
+                return 0;
+            }
+            return (System.nanoTime() - Math.max(connectionNanos, masterReconnectNanos)) / 1e9;
+        }
+    }
+
     /** Whether the AGV reports state and its connection is not known broken (see {@link #awaitOnline()}). */
     public boolean isOnline() {
         synchronized (lock) {
