@@ -130,6 +130,9 @@ public final class FleetService implements AutoCloseable {
         dispatcher = new Thread(this::dispatchLoop, "triad-dispatcher");
         dispatcher.setDaemon(true);
         dispatcher.start();
+        Thread poses = new Thread(this::publishPoses, "triad-positions");
+        poses.setDaemon(true);
+        poses.start();
     }
 
     private void note(String what) {
@@ -398,6 +401,52 @@ public final class FleetService implements AutoCloseable {
     private static RobotView refusedView(String name, String why) {
         return new RobotView(name, false, null, null, List.of(), 0, false, "refused: " + why, "refused", null, null);
     }
+
+    /** The building's map: every robot where its platform reports it, on the layout the first robot with a floor map draws. */
+    public Views.BuildingView building() {
+        List<RobotView> robots = robots();
+        for (RobotLane l : lanes.values()) {
+            Optional<FloorMap> floor;
+            try {
+                floor = l.robot().floor();
+            } catch (RuntimeException e) {
+                continue;
+            }
+            if (floor.isPresent()) {
+                FloorMap f = floor.get();
+                FloorMap layout = new FloorMap(f.time(), f.bounds(), f.areas(), f.walls(), f.doors(), f.waypoints(), List.of(), f.items(), f.people());
+                org.triad.refarc.fleet.Pose p = quietly(l.robot()::pose);
+                return new Views.BuildingView(robots, layout, p == null ? null : p.mapId());
+            }
+        }
+        return new Views.BuildingView(robots, null, null);
+    }
+
+    /**
+     * Publishes the robots (positions, batteries, presence) on the event stream as {@code building}, every
+     * {@value #POSES_MILLIS} ms while someone listens and something changed: the operator's live map.
+     */
+    private void publishPoses() {
+        List<RobotView> last = null;
+        while (running) {
+            sleepQuietly(POSES_MILLIS);
+            if (listeners.isEmpty()) {
+                last = null;
+                continue;
+            }
+            try {
+                List<RobotView> now = robots();
+                if (!now.equals(last)) {
+                    publish(new LiveEvent("building", now));
+                    last = now;
+                }
+            } catch (RuntimeException e) {
+                // a platform that fails to report is shown without a position; the next round tries again
+            }
+        }
+    }
+
+    static final long POSES_MILLIS = 500;
 
     // ---- robots that come and go (FleetChanges, through TriadService) ----------------------------
 

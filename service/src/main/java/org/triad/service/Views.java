@@ -26,6 +26,14 @@ public final class Views {
             String presence, org.triad.refarc.fleet.Pose pose, org.triad.refarc.fleet.Battery battery) {
     }
 
+    /**
+     * The building's map: every robot (with its {@code pose}, whose {@code mapId} says the floor), and the
+     * layout (rooms, walls, doors, waypoints, items, people) the first robot with a floor map draws, on
+     * {@code layoutMap} (that robot's map id), or null when no platform draws one.
+     */
+    public record BuildingView(List<RobotView> robots, org.triad.refarc.fleet.FloorMap layout, String layoutMap) {
+    }
+
     public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,
             String resolution) {
     }

@@ -13,6 +13,7 @@ import org.triad.refarc.fleet.Battery;
 import org.triad.refarc.fleet.FleetChanges;
 import org.triad.refarc.fleet.FleetContext;
 import org.triad.refarc.fleet.FleetRobot;
+import org.triad.refarc.fleet.FloorMap;
 import org.triad.refarc.fleet.Pose;
 import org.triad.refarc.fleet.RobotPlatformProvider;
 import org.triad.vda5050.master.AgvDiscovery;
@@ -107,6 +108,19 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         }
         return robots;
     }
+
+    /** The hospital's rooms, walls, doors and waypoints, taken from the simulation once, when the first courier draws its map. */
+    private static final java.util.function.Supplier<FloorMap> LAYOUT = new java.util.function.Supplier<>() {
+        private FloorMap layout;
+
+        @Override
+        public synchronized FloorMap get() {
+            if (layout == null) {
+                layout = SimulatedHospitalRobot.layout();
+            }
+            return layout;
+        }
+    };
 
     /** The actions {@link org.triad.examples.hospital.vda5050.VdaCourier} sends: an AGV whose factsheet lacks one cannot serve the hospital. */
     static final java.util.Set<String> REQUIRED_ACTIONS = java.util.Set.of("pick", "drop", "guide", "startFollowing");
@@ -243,6 +257,16 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         public Optional<Pose> pose() {
             return agv.state().map(s -> s.agvPosition()).filter(p -> p != null && p.positionInitialized())
                     .map(p -> new Pose(p.x(), p.y(), p.theta(), p.mapId()));
+        }
+
+        /** The hospital's layout with this courier where its state says it is (a VDA 5050 AGV draws no map). */
+        @Override
+        public Optional<FloorMap> floor() {
+            FloorMap m = LAYOUT.get();
+            Optional<Pose> p = pose();
+            List<FloorMap.Mark> robots = p.map(q -> List.of(new FloorMap.Mark(name, q.x(), q.y(), agv.state().map(s -> s.loads() == null ? ""
+                    : String.join(", ", s.loads().stream().map(l -> l.loadId()).toList())).orElse("")))).orElse(List.of());
+            return Optional.of(new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), robots, List.of(), List.of()));
         }
 
         @Override
