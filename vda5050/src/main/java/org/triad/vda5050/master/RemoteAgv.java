@@ -168,6 +168,20 @@ public final class RemoteAgv implements FailureExplaining {
         }
     }
 
+    /**
+     * Waits until the AGV's state shows no order in progress (no node or edge states, not driving), at most
+     * {@code seconds}, less if it falls silent for the state timeout: called between this master's own
+     * orders, it waits for an order that another master control sent before (a service killed mid-order and
+     * started again), so that what is read next is where that order left the AGV, not where it began.
+     * Returns whether the AGV is at rest.
+     */
+    public boolean awaitAtRest(double seconds) {
+        long began = System.nanoTime();
+        return await(() -> state == null || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving()
+                || System.nanoTime() - Math.max(began, stateNanos) > seconds(timeouts.stateSeconds()), seconds)
+                && state().map(s -> s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving()).orElse(true);
+    }
+
     /** Whether the AGV reports state and its connection is not known broken (see {@link #awaitOnline()}). */
     public boolean isOnline() {
         synchronized (lock) {

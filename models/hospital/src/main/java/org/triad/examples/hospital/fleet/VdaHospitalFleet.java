@@ -124,6 +124,8 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     /** The actions {@link org.triad.examples.hospital.vda5050.VdaCourier} sends: an AGV whose factsheet lacks one cannot serve the hospital. */
     static final java.util.Set<String> REQUIRED_ACTIONS = java.util.Set.of("pick", "drop", "guide", "startFollowing");
+    /** How long reading a courier's state waits for an order a previous master sent to end (one edge at walking speed and more). */
+    static final double AT_REST_SECONDS = 60;
     /** How long an AGV that announced itself may take to publish its factsheet and first state. */
     static final double FACTSHEET_SECONDS = 5;
 
@@ -234,7 +236,14 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             this.name = name;
             this.onClose = onClose;
             this.agv = agv.courier().agv();
-            this.state = new HospitalStateProvider(agv.courier(), agv.building());
+            StateSource generated = new HospitalStateProvider(agv.courier(), agv.building());
+            RemoteAgv remote = agv.courier().agv();
+            // read between the fleet's own orders: an order still running was sent by a master before (a service
+            // restarted mid-task), so the state is read where that order leaves the AGV, and its moves are not sent again
+            this.state = () -> {
+                remote.awaitAtRest(AT_REST_SECONDS);
+                return generated.currentState();
+            };
             this.actions = new HospitalActionExecutor(agv.courier(), agv.building());
         }
 
