@@ -62,6 +62,11 @@ public final class FleetService implements AutoCloseable {
     /** Robots that announced themselves and cannot be used, with the reason (shown to the operator). */
     private final Map<String, String> refusedRobots = java.util.Collections.synchronizedMap(new LinkedHashMap<>());
     private final GoalPlanner goalPlanner;
+    /** The charging policy (application.properties), or null; its task checked against the models. */
+    private volatile ChargingPolicy charging;
+    private volatile TaskCall chargingCall;
+    /** Robots low on battery that were sent to charge, with the charging task: one task per time below the threshold. */
+    private final Map<String, Long> sentToCharge = new ConcurrentHashMap<>();
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
     private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
@@ -399,7 +404,7 @@ public final class FleetService implements AutoCloseable {
     }
 
     private static RobotView refusedView(String name, String why) {
-        return new RobotView(name, false, null, null, List.of(), 0, false, "refused: " + why, "refused", null, null);
+        return new RobotView(name, false, null, null, List.of(), 0, false, "refused: " + why, "refused", null, null, null);
     }
 
     /** The building's map: every robot where its platform reports it, on the layout the first robot with a floor map draws. */
@@ -447,6 +452,84 @@ public final class FleetService implements AutoCloseable {
     }
 
     static final long POSES_MILLIS = 500;
+
+    // ---- battery ------------------------------------------------------------------------------
+
+    /**
+     * From now on a robot reporting a charge below {@code policy.below()} gets no new task, and, if the policy
+     * names a charging task, that task is queued for it (priority 100) once each time it falls below.
+     *
+     * @throws ServiceError when the charging task does not fit the models (its message names what)
+     */
+    public void useCharging(ChargingPolicy policy) {
+        TaskCall call = policy.task() == null ? null : catalog.check(policy.task());
+        synchronized (lock) {
+            charging = policy;
+            chargingCall = call;
+            lock.notifyAll();
+        }
+    }
+
+    /** The robot's charge when the policy says it is too low for work, else null. */
+    private Double lowCharge(RobotLane l) {
+        ChargingPolicy policy = charging;
+        if (policy == null) {
+            return null;
+        }
+        org.triad.refarc.fleet.Battery b = quietly(l.robot()::battery);
+        return b != null && b.charge() < policy.below() ? b.charge() : null;
+    }
+
+    /** Whether the queued task is the charging task for the robot it is bound to. */
+    private boolean chargingTask(long id) {
+        TaskCall c = chargingCall;
+        TaskCall call = calls.get(id);
+        return c != null && call != null && preferred.containsKey(id) && call.task().equals(c.task()) && call.args().equals(c.args());
+    }
+
+    /** Queues the charging task for each idle online robot that fell below the threshold; call with the lock held. */
+    private void sendToCharge(List<Long> published) {
+        ChargingPolicy policy = charging;
+        if (policy == null) {
+            return;
+        }
+        for (RobotLane l : lanes.values()) {
+            Double low = lowCharge(l);
+            if (low == null) {
+                sentToCharge.remove(l.name());
+                continue;
+            }
+            if (chargingCall == null || !l.online() || sentToCharge.containsKey(l.name())
+                    || queue.stream().anyMatch(id -> l.name().equals(preferred.get(id)) && chargingTask(id))) {
+                continue;
+            }
+            Instant now = clock.instant();
+            String text = String.format(java.util.Locale.ROOT, "submitted by the service: robot %s reports %.0f %% battery, below %.0f %%; sent to charge: %s",
+                    l.name(), low, policy.below(), chargingCall.describe());
+            TaskStore.Submitted stored = store.submitTask(chargingCall.task(), chargingCall.args().toString(), 100, now, text, null);
+            long id = stored.task().id();
+            store.updateTask(id, TaskState.QUEUED, null, l.name(), null, now);
+            calls.put(id, chargingCall);
+            priorities.put(id, 100);
+            preferred.put(id, l.name());
+            queue.add(id);
+            sentToCharge.put(l.name(), id);
+            published.add(id);
+            System.err.println("triad serve: " + text + " (task " + id + ")");
+        }
+    }
+
+    /** Why a robot gets no new task for its battery, for the operator, or null. */
+    private String batteryNote(RobotLane l) {
+        Double low = lowCharge(l);
+        ChargingPolicy policy = charging;
+        if (low == null || policy == null) {
+            return null;
+        }
+        Long sent = sentToCharge.get(l.name());
+        return String.format(java.util.Locale.ROOT, "battery %.0f %% is below %.0f %%: no new task", low, policy.below())
+                + (sent != null ? "; sent to charge (task " + sent + ")" : chargingCall == null ? "; no charging task is configured" : "");
+    }
 
     // ---- robots that come and go (FleetChanges, through TriadService) ----------------------------
 
@@ -688,6 +771,7 @@ public final class FleetService implements AutoCloseable {
      * first); its reason says for what, and is recorded once per holder in {@code nowWaiting}.
      */
     private Choice next(List<Long> nowWaiting) {
+        sendToCharge(nowWaiting);
         List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle()).toList();
         if (idle.isEmpty()) {
             return null;
@@ -707,6 +791,8 @@ public final class FleetService implements AutoCloseable {
             }
             String want = preferred.get(id);
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
+            // a robot low on battery takes only its charging task
+            candidates = candidates.stream().filter(l -> lowCharge(l) == null || chargingTask(id)).toList();
             if (!candidates.isEmpty()) {
                 return new Choice(id, call, candidates);
             }
@@ -982,7 +1068,8 @@ public final class FleetService implements AutoCloseable {
     private RobotView view(RobotLane l) {
         FleetRobot r = l.robot();
         return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), r.floor().isPresent(),
-                l.online() ? null : l.offlineReason(), l.isGone() ? "gone" : l.online() ? "online" : "offline", quietly(r::pose), quietly(r::battery));
+                l.online() ? null : l.offlineReason(), l.isGone() ? "gone" : l.online() ? "online" : "offline", quietly(r::pose), quietly(r::battery),
+                batteryNote(l));
     }
 
     /** What a platform reports, or null when it reports nothing or fails to (a view never fails for it). */

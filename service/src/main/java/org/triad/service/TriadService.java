@@ -99,6 +99,14 @@ public final class TriadService implements AutoCloseable {
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
             roster.attach(fleet);
+            java.util.Optional<ChargingPolicy> charging = ChargingPolicy.of(Thread.currentThread().getContextClassLoader());
+            if (charging.isPresent()) {
+                try {
+                    fleet.useCharging(charging.get());
+                } catch (ServiceError e) {
+                    throw ServiceError.startup(ChargingPolicy.RESOURCE + ": charging.task: " + e.getMessage());
+                }
+            }
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
             HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https);
             int port;

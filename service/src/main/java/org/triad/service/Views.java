@@ -20,10 +20,11 @@ public final class Views {
     /**
      * {@code offlineReason}: why the robot is out of dispatch (the operator, tasks aborted on it in a row, its
      * platform reporting it gone, or refused when it announced itself), or null; {@code presence}: online,
-     * offline (out of dispatch), gone or refused; {@code pose} and {@code battery} as its platform reports them, or null.
+     * offline (out of dispatch), gone or refused; {@code pose} and {@code battery} as its platform reports them, or null;
+     * {@code batteryNote}: why it gets no new task for its battery (the charging policy), or null.
      */
     public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason,
-            String presence, org.triad.refarc.fleet.Pose pose, org.triad.refarc.fleet.Battery battery) {
+            String presence, org.triad.refarc.fleet.Pose pose, org.triad.refarc.fleet.Battery battery, String batteryNote) {
     }
 
     /**

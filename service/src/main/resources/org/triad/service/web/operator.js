@@ -100,6 +100,7 @@
         r.presence === "refused" || r.presence === "gone" ? "" : [" ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
           r.online ? "Take offline" : "Put online")]),
       r.offlineReason ? el("div", { class: "robot-offline-reason" }, r.offlineReason) : "",
+      r.batteryNote ? el("div", { class: "robot-battery-note" }, r.batteryNote) : "",
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
   }
 
