@@ -152,6 +152,7 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             this.closeAll = closeAll;
             List<FleetRobot> first = early;
             early = null;
+            first.sort(java.util.Comparator.comparing(FleetRobot::name)); // fleet order by name, not by who answered first
             return first;
         }
 
