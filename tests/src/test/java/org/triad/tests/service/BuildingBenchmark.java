@@ -27,7 +27,9 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * aborted/refused with the reasons), picks per item against completed deliveries (an object delivered
  * twice would show as more picks than deliveries), tasks per simulated hour, the dispatcher's time per
  * dispatch (median, p99) and the CPU seconds of broker, building and service. Arguments:
- * {@code [robots=10] [tasks=200] [speed=10] [models=models/hospital/src/main/models]}; see service/BENCHMARK.md.
+ * {@code [robots=10] [tasks=200] [speed=10] [mix=all|moves] [models=models/hospital/src/main/models]} ({@code moves}: patrols and
+ * trips only, for couriers that each have a simulation of their own, where items and people are not shared); see service/BENCHMARK.md.
+ * It stops waiting when every robot is out of dispatch (3 aborts in a row each) and reports the rest as queued.
  */
 public final class BuildingBenchmark {
     private static final ObjectMapper JSON = new ObjectMapper();
@@ -42,7 +44,8 @@ public final class BuildingBenchmark {
         int robots = args.length > 0 ? Integer.parseInt(args[0]) : 10;
         int tasks = args.length > 1 ? Integer.parseInt(args[1]) : 200;
         double speed = args.length > 2 ? Double.parseDouble(args[2]) : 10;
-        Path models = Path.of(args.length > 3 ? args[3] : "models/hospital/src/main/models");
+        boolean movesOnly = args.length > 3 && args[3].equals("moves");
+        Path models = Path.of(args.length > 4 ? args[4] : "models/hospital/src/main/models");
         Path dir = Files.createTempDirectory("triad-building-benchmark");
         System.out.printf(Locale.ROOT, "building benchmark: %d robots, %d tasks, %.0fx real time; %d cores, Java %s%n", robots, tasks, speed,
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
@@ -68,7 +71,7 @@ public final class BuildingBenchmark {
                 ITEMS.forEach(i -> itemAt.put(i, "storage"));
                 List<Long> ids = new ArrayList<>();
                 for (int i = 0; i < tasks; i++) {
-                    ids.add(s.fleet().submit(task(i, itemAt)).id());
+                    ids.add(s.fleet().submit(task(movesOnly ? 2 + i % 2 : i, itemAt)).id());
                 }
                 Map<Long, TaskView> ended = new TreeMap<>();
                 long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(30);
@@ -80,6 +83,10 @@ public final class BuildingBenchmark {
                                 ended.put(id, t);
                             }
                         }
+                    }
+                    if (s.fleet().robots().stream().noneMatch(r -> r.online() || r.task() != null)) {
+                        System.out.println("every robot is out of dispatch; the rest stays queued");
+                        break;
                     }
                     Thread.sleep(200);
                 }
@@ -147,6 +154,7 @@ public final class BuildingBenchmark {
         List<Long> times = new ArrayList<>(s.fleet().dispatchTimes());
         times.sort(null);
         int completed = states.getOrDefault("completed", 0);
+        states.put("queued (not ended)", ids.size() - ended.size());
         System.out.printf(Locale.ROOT, "%nended %d of %d in %.1f s wall (%.0f simulated s): %s%n", ended.size(), ids.size(), wall, wall * speed, states);
         reasons.forEach((r, n) -> System.out.printf(Locale.ROOT, "  %3d x %s%n", n, r));
         System.out.printf(Locale.ROOT, "deliveries completed per item %s, picks accepted per item %s%n", delivered, picks);
