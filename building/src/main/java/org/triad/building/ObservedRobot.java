@@ -73,6 +73,16 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
     }
 
     @Override
+    public Optional<org.triad.refarc.fleet.Pose> pose() {
+        return robot.pose();
+    }
+
+    @Override
+    public Optional<org.triad.refarc.fleet.Battery> battery() {
+        return robot.battery();
+    }
+
+    @Override
     public void close() {
         robot.close();
     }

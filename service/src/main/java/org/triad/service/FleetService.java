@@ -57,7 +57,16 @@ public final class FleetService implements AutoCloseable {
     private final TaskStore store;
     private final GoalSolver estimator;
     private final Clock clock;
-    private final Map<String, RobotLane> lanes = new LinkedHashMap<>();
+    /** The robots by name, in fleet order; replaced as a whole when a robot joins (readers take the map they find). */
+    private volatile Map<String, RobotLane> lanes = Map.of();
+    /** Robots that announced themselves and cannot be used, with the reason (shown to the operator). */
+    private final Map<String, String> refusedRobots = java.util.Collections.synchronizedMap(new LinkedHashMap<>());
+    private final GoalPlanner goalPlanner;
+    /** The charging policy (application.properties), or null; its task checked against the models. */
+    private volatile ChargingPolicy charging;
+    private volatile TaskCall chargingCall;
+    /** Robots low on battery that were sent to charge, with the charging task: one task per time below the threshold. */
+    private final Map<String, Long> sentToCharge = new ConcurrentHashMap<>();
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
     private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
@@ -106,10 +115,12 @@ public final class FleetService implements AutoCloseable {
         this.clock = clock;
         this.lease = lease;
         this.claims = new Claims(catalog.schema());
-        GoalPlanner goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
+        this.goalPlanner = new org.triad.refarc.model.SchemaGoalPlanner(planner);
+        Map<String, RobotLane> first = new LinkedHashMap<>();
         for (FleetRobot r : robots) {
-            lanes.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
+            first.put(r.name(), new RobotLane(r, goalPlanner, this::onStatus));
         }
+        lanes = java.util.Collections.unmodifiableMap(first);
         if (lease.holds()) {
             synchronized (lock) {
                 recover();
@@ -124,6 +135,9 @@ public final class FleetService implements AutoCloseable {
         dispatcher = new Thread(this::dispatchLoop, "triad-dispatcher");
         dispatcher.setDaemon(true);
         dispatcher.start();
+        Thread poses = new Thread(this::publishPoses, "triad-positions");
+        poses.setDaemon(true);
+        poses.start();
     }
 
     private void note(String what) {
@@ -380,8 +394,207 @@ public final class FleetService implements AutoCloseable {
     }
 
     public List<RobotView> robots() {
-        return lanes.values().stream().map(this::view).toList();
+        List<RobotView> out = new ArrayList<>(lanes.values().stream().map(this::view).toList());
+        Map<String, String> refused;
+        synchronized (refusedRobots) {
+            refused = new LinkedHashMap<>(refusedRobots);
+        }
+        refused.forEach((name, why) -> out.add(refusedView(name, why)));
+        return out;
     }
+
+    private static RobotView refusedView(String name, String why) {
+        return new RobotView(name, false, null, null, List.of(), 0, false, "refused: " + why, "refused", null, null, null);
+    }
+
+    /** The building's map: every robot where its platform reports it, on the layout the first robot with a floor map draws. */
+    public Views.BuildingView building() {
+        List<RobotView> robots = robots();
+        for (RobotLane l : lanes.values()) {
+            Optional<FloorMap> floor;
+            try {
+                floor = l.robot().floor();
+            } catch (RuntimeException e) {
+                continue;
+            }
+            if (floor.isPresent()) {
+                FloorMap f = floor.get();
+                FloorMap layout = new FloorMap(f.time(), f.bounds(), f.areas(), f.walls(), f.doors(), f.waypoints(), List.of(), f.items(), f.people());
+                org.triad.refarc.fleet.Pose p = quietly(l.robot()::pose);
+                return new Views.BuildingView(robots, layout, p == null ? null : p.mapId());
+            }
+        }
+        return new Views.BuildingView(robots, null, null);
+    }
+
+    /**
+     * Publishes the robots (positions, batteries, presence) on the event stream as {@code building}, every
+     * {@value #POSES_MILLIS} ms while someone listens and something changed: the operator's live map.
+     */
+    private void publishPoses() {
+        List<RobotView> last = null;
+        while (running) {
+            sleepQuietly(POSES_MILLIS);
+            if (listeners.isEmpty()) {
+                last = null;
+                continue;
+            }
+            try {
+                List<RobotView> now = robots();
+                if (!now.equals(last)) {
+                    publish(new LiveEvent("building", now));
+                    last = now;
+                }
+            } catch (RuntimeException e) {
+                // a platform that fails to report is shown without a position; the next round tries again
+            }
+        }
+    }
+
+    static final long POSES_MILLIS = 500;
+
+    // ---- battery ------------------------------------------------------------------------------
+
+    /**
+     * From now on a robot reporting a charge below {@code policy.below()} gets no new task, and, if the policy
+     * names a charging task, that task is queued for it (priority 100) once each time it falls below.
+     *
+     * @throws ServiceError when the charging task does not fit the models (its message names what)
+     */
+    public void useCharging(ChargingPolicy policy) {
+        TaskCall call = policy.task() == null ? null : catalog.check(policy.task());
+        synchronized (lock) {
+            charging = policy;
+            chargingCall = call;
+            lock.notifyAll();
+        }
+    }
+
+    /** The robot's charge when the policy says it is too low for work, else null. */
+    private Double lowCharge(RobotLane l) {
+        ChargingPolicy policy = charging;
+        if (policy == null) {
+            return null;
+        }
+        org.triad.refarc.fleet.Battery b = quietly(l.robot()::battery);
+        return b != null && b.charge() < policy.below() ? b.charge() : null;
+    }
+
+    /** Whether the queued task is the charging task for the robot it is bound to. */
+    private boolean chargingTask(long id) {
+        TaskCall c = chargingCall;
+        TaskCall call = calls.get(id);
+        return c != null && call != null && preferred.containsKey(id) && call.task().equals(c.task()) && call.args().equals(c.args());
+    }
+
+    /** Queues the charging task for each idle online robot that fell below the threshold; call with the lock held. */
+    private void sendToCharge(List<Long> published) {
+        ChargingPolicy policy = charging;
+        if (policy == null) {
+            return;
+        }
+        for (RobotLane l : lanes.values()) {
+            Double low = lowCharge(l);
+            if (low == null) {
+                sentToCharge.remove(l.name());
+                continue;
+            }
+            if (chargingCall == null || !l.online() || sentToCharge.containsKey(l.name())
+                    || queue.stream().anyMatch(id -> l.name().equals(preferred.get(id)) && chargingTask(id))) {
+                continue;
+            }
+            Instant now = clock.instant();
+            String text = String.format(java.util.Locale.ROOT, "submitted by the service: robot %s reports %.0f %% battery, below %.0f %%; sent to charge: %s",
+                    l.name(), low, policy.below(), chargingCall.describe());
+            TaskStore.Submitted stored = store.submitTask(chargingCall.task(), chargingCall.args().toString(), 100, now, text, null);
+            long id = stored.task().id();
+            store.updateTask(id, TaskState.QUEUED, null, l.name(), null, now);
+            calls.put(id, chargingCall);
+            priorities.put(id, 100);
+            preferred.put(id, l.name());
+            queue.add(id);
+            sentToCharge.put(l.name(), id);
+            published.add(id);
+            System.err.println("triad serve: " + text + " (task " + id + ")");
+        }
+    }
+
+    /** Why a robot gets no new task for its battery, for the operator, or null. */
+    private String batteryNote(RobotLane l) {
+        Double low = lowCharge(l);
+        ChargingPolicy policy = charging;
+        if (low == null || policy == null) {
+            return null;
+        }
+        Long sent = sentToCharge.get(l.name());
+        return String.format(java.util.Locale.ROOT, "battery %.0f %% is below %.0f %%: no new task", low, policy.below())
+                + (sent != null ? "; sent to charge (task " + sent + ")" : chargingCall == null ? "; no charging task is configured" : "");
+    }
+
+    // ---- robots that come and go (FleetChanges, through TriadService) ----------------------------
+
+    /** Whether the fleet has a robot of this name (one that left included). */
+    public boolean hasRobot(String name) {
+        return lanes.containsKey(name);
+    }
+
+    /**
+     * A robot that came while the service runs gets a lane of its own and is dispatched to from now on;
+     * for a robot of the fleet that left, this says it is back.
+     */
+    public void join(FleetRobot robot) {
+        RobotLane lane;
+        boolean back;
+        synchronized (lock) {
+            if (!running) {
+                return;
+            }
+            refusedRobots.remove(robot.name());
+            lane = lanes.get(robot.name());
+            back = lane != null;
+            if (lane == null) {
+                lane = new RobotLane(robot, goalPlanner, this::onStatus);
+                Map<String, RobotLane> more = new LinkedHashMap<>(lanes);
+                more.put(robot.name(), lane);
+                lanes = java.util.Collections.unmodifiableMap(more);
+            } else {
+                lane.back();
+            }
+            lock.notifyAll();
+        }
+        System.err.println("triad serve: robot " + robot.name() + (back ? " is back" : " joined the fleet"));
+        publish(new LiveEvent("robot", view(lane)));
+    }
+
+    /**
+     * The platform reports a robot gone for {@code reason} (the true cause): it gets no task until it is
+     * back, and the task it runs is stopped at its next step and ends aborted with that cause and a
+     * remote-operation request (the robot may still hold what the task took, so the operator decides).
+     */
+    public void leave(String name, String reason) {
+        RobotLane lane = lanes.get(name);
+        if (lane == null) {
+            return;
+        }
+        synchronized (lock) {
+            lane.gone(reason);
+            lane.stopAborting("robot " + name + " is gone: " + reason);
+        }
+        System.err.println("triad serve: robot " + name + " is gone: " + reason);
+        publish(new LiveEvent("robot", view(lane)));
+    }
+
+    /** Something announced itself as a robot and cannot be used, for {@code reason}: shown to the operator, never dispatched to. */
+    public void refuseRobot(String name, String reason) {
+        if (lanes.containsKey(name)) {
+            leave(name, "refused: " + reason);
+            return;
+        }
+        refusedRobots.put(name, reason);
+        System.err.println("triad serve: robot " + name + " refused: " + reason);
+        publish(new LiveEvent("robot", refusedView(name, reason)));
+    }
+
 
     public Optional<FloorMap> floor(String robot) {
         RobotLane lane = lanes.get(robot);
@@ -398,6 +611,9 @@ public final class FleetService implements AutoCloseable {
             throw new ServiceError(404, "not-found", "no robot '" + robot + "'; the fleet has " + lanes.keySet());
         }
         synchronized (lock) {
+            if (online && lane.isGone()) {
+                throw new ServiceError(409, "robot-gone", "robot " + robot + " is " + lane.offlineReason() + "; it comes back when its platform reports it again");
+            }
             lane.setOnline(online);
             if (!online) {
                 lane.stop("robot " + robot + " taken offline by the operator");
@@ -419,6 +635,15 @@ public final class FleetService implements AutoCloseable {
         }
         return out;
     }
+
+    /** The time each dispatch took to choose a robot (estimates included), ns, in order (the first 100,000): for benchmarks. */
+    public List<Long> dispatchTimes() {
+        synchronized (lock) {
+            return List.copyOf(dispatchTimes);
+        }
+    }
+
+    private final List<Long> dispatchTimes = new ArrayList<>();
 
     /** Mean time the dispatcher took to choose a robot (estimates included), ns, and how many dispatches. */
     public long[] dispatchStatistics() {
@@ -555,6 +780,7 @@ public final class FleetService implements AutoCloseable {
      * first); its reason says for what, and is recorded once per holder in {@code nowWaiting}.
      */
     private Choice next(List<Long> nowWaiting) {
+        sendToCharge(nowWaiting);
         List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle()).toList();
         if (idle.isEmpty()) {
             return null;
@@ -574,6 +800,8 @@ public final class FleetService implements AutoCloseable {
             }
             String want = preferred.get(id);
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
+            // a robot low on battery takes only its charging task
+            candidates = candidates.stream().filter(l -> lowCharge(l) == null || chargingTask(id)).toList();
             if (!candidates.isEmpty()) {
                 return new Choice(id, call, candidates);
             }
@@ -643,8 +871,12 @@ public final class FleetService implements AutoCloseable {
             claims.take(choice.task(), best.name(), claimed(choice.task(), choice.call()));
             dispatchedAt.put(choice.task(), now);
             best.start(choice.task(), task);
-            dispatchNanos += System.nanoTime() - start;
+            long took = System.nanoTime() - start;
+            dispatchNanos += took;
             dispatches++;
+            if (dispatchTimes.size() < 100_000) {
+                dispatchTimes.add(took);
+            }
         }
         publishTask(choice.task(), false);
         publish(new LiveEvent("robot", view(best)));
@@ -662,6 +894,7 @@ public final class FleetService implements AutoCloseable {
         }
         boolean last = status instanceof Status.TaskCompleted || status instanceof Status.TaskAborted;
         String stop = lane.stopReason().orElse(null);
+        boolean stopAborts = lane.stopAborts();
         Instant now = clock.instant();
         try {
             if (LEASE_LOST.equals(stop)) {
@@ -674,13 +907,15 @@ public final class FleetService implements AutoCloseable {
             } else if (status instanceof Status.TaskAborted a) {
                 if (stop != null && stop.startsWith("cancelled")) {
                     durably(() -> store.finishTask(taskId, lane.name(), List.<String[]>of(event), TaskState.CANCELLED, lane.name(), stop, null, now));
-                } else if (stop != null) {
+                } else if (stop != null && !stopAborts) {
                     String[] interrupted = { "interrupted", "interrupted: " + stop + "; queued again" };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, interrupted), TaskState.QUEUED, null, stop, null, now));
                 } else {
-                    String[] request = { "remote_operation", "remote operation requested: " + a.reason() };
-                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), a.reason(),
-                            new String[] { a.goal().describe(), a.reason() }, now));
+                    // a robot that is gone: its true cause, whatever step RefArc was at when it noticed
+                    String cause = stopAborts && stop != null && !a.reason().contains(stop) ? stop + " (" + a.reason() + ")" : a.reason();
+                    String[] request = { "remote_operation", "remote operation requested: " + cause };
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), cause,
+                            new String[] { a.goal().describe(), cause }, now));
                 }
             } else {
                 durably(() -> store.insertEvent(taskId, event[0], lane.name(), event[1], now));
@@ -691,7 +926,7 @@ public final class FleetService implements AutoCloseable {
         } finally {
             if (last) {
                 synchronized (lock) {
-                    if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && dispatching) {
+                    if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && !stopAborts && dispatching) {
                         queue.add(taskId);
                     }
                     Instant began = dispatchedAt.remove(taskId);
@@ -844,8 +1079,19 @@ public final class FleetService implements AutoCloseable {
     }
 
     private RobotView view(RobotLane l) {
-        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), l.robot().floor().isPresent(),
-                l.online() ? null : l.offlineReason());
+        FleetRobot r = l.robot();
+        return new RobotView(l.name(), l.online(), l.currentTask().orElse(null), l.currentCall(), l.plan(), l.step(), r.floor().isPresent(),
+                l.online() ? null : l.offlineReason(), l.isGone() ? "gone" : l.online() ? "online" : "offline", quietly(r::pose), quietly(r::battery),
+                batteryNote(l));
+    }
+
+    /** What a platform reports, or null when it reports nothing or fails to (a view never fails for it). */
+    private static <T> T quietly(java.util.function.Supplier<Optional<T>> read) {
+        try {
+            return read.get().orElse(null);
+        } catch (RuntimeException e) {
+            return null;
+        }
     }
 
     private TaskView publishTask(long id, boolean withEvents) {

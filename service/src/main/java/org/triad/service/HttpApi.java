@@ -198,6 +198,7 @@ final class HttpApi {
         });
         app.get("/api/robots", ctx -> ctx.json(service.robots()));
         app.get("/api/traffic", ctx -> ctx.json(traffic.longerThan(waitBound(ctx.queryParam("over")))));
+        app.get("/api/building", ctx -> ctx.json(service.building()));
         app.get("/api/robots/{name}/floor", ctx -> ctx.json(service.floor(ctx.pathParam("name"))
                 .orElseThrow(() -> new ServiceError(404, "no-map", "robot " + ctx.pathParam("name") + " has no floor map (its platform gives none)"))));
         app.post("/api/robots/{name}/offline", ctx -> {

@@ -104,6 +104,10 @@ public final class OpenApiDocument {
         ObjectNode robots = paths.putObject("/api/robots");
         response(op(robots, "get", "listRobots", "The fleet: each robot's state, current task and plan."), "200", "The robots", arrayOf("Robot"));
         errors((ObjectNode) robots.get("get"), "401");
+        ObjectNode building = paths.putObject("/api/building");
+        response(op(building, "get", "building", "The building's map: every robot with its pose (mapId: its floor), and the layout the first robot with a floor map draws."),
+                "200", "The map", JSON.objectNode().put("type", "object"));
+        errors((ObjectNode) building.get("get"), "401");
         ObjectNode floor = paths.putObject("/api/robots/{name}/floor");
         floor.putArray("parameters").addObject().put("name", "name").put("in", "path").put("required", true).putObject("schema").put("type", "string");
         response(op(floor, "get", "robotFloor", "The robot's latest floor map (metres): areas, walls, doors, robots, items, people."), "200", "The map",
@@ -277,7 +281,19 @@ public final class OpenApiDocument {
         p.putObject("step").put("type", "integer");
         p.putObject("map").put("type", "boolean");
         p.putObject("offlineReason").put("type", "string").put("nullable", true)
-                .put("description", "why the robot is out of dispatch: taken offline by the operator, or several tasks in a row aborted on it");
+                .put("description", "why the robot is out of dispatch: taken offline by the operator, several tasks in a row aborted on it, gone, or refused");
+        p.putObject("presence").put("type", "string").putArray("enum").add("online").add("offline").add("gone").add("refused");
+        ObjectNode pose = p.putObject("pose").put("type", "object").put("nullable", true)
+                .put("description", "where the robot's platform reports it: metres and radians on the map mapId (e.g. a floor)");
+        ObjectNode pp = pose.putObject("properties");
+        for (String k : List.of("x", "y", "theta")) {
+            pp.putObject(k).put("type", "number");
+        }
+        pp.putObject("mapId").put("type", "string").put("nullable", true);
+        ObjectNode battery = p.putObject("battery").put("type", "object").put("nullable", true)
+                .put("description", "the battery as the robot's platform reports it: charge in percent, whether it charges");
+        battery.putObject("properties").putObject("charge").put("type", "number");
+        ((ObjectNode) battery.get("properties")).putObject("charging").put("type", "boolean");
         return s;
     }
 

@@ -37,10 +37,14 @@ final class RobotLane implements AutoCloseable {
     private final Map<TaskInstance, Long> ids = Collections.synchronizedMap(new IdentityHashMap<>());
     private volatile boolean online = true;
     private volatile String offlineReason;
+    /** Why the robot is gone (its platform reported it so, e.g. a VDA 5050 connection broken), or null while it is there. */
+    private volatile String goneReason;
     private int abortedInARow;
     private volatile Long currentTask;
     private volatile String currentCall;
     private volatile String stopReason;
+    /** Whether the stop ends the task aborted with a remote-operation request (its robot is gone) rather than queued again. */
+    private volatile boolean stopAborts;
     private volatile List<String> plan = List.of();
     private volatile int step;
 
@@ -84,8 +88,22 @@ final class RobotLane implements AutoCloseable {
         return robot.stateSource();
     }
 
+    /** Whether the robot takes tasks: the operator (or the abort rule) has it online, and it is there. */
     boolean online() {
-        return online;
+        return online && goneReason == null;
+    }
+
+    /** The platform reports the robot gone, for {@code reason}; it takes no task until {@link #back()}. */
+    void gone(String reason) {
+        goneReason = reason;
+    }
+
+    void back() {
+        goneReason = null;
+    }
+
+    boolean isGone() {
+        return goneReason != null;
     }
 
     void setOnline(boolean on) {
@@ -96,9 +114,10 @@ final class RobotLane implements AutoCloseable {
         }
     }
 
-    /** Why the robot is out of dispatch, or null. */
+    /** Why the robot is out of dispatch (gone first, then the operator's or the abort rule's reason), or null. */
     String offlineReason() {
-        return offlineReason;
+        String gone = goneReason;
+        return gone != null ? "gone: " + gone : online ? null : offlineReason;
     }
 
     /**
@@ -152,16 +171,30 @@ final class RobotLane implements AutoCloseable {
         currentTask = taskId;
         currentCall = task.describe();
         stopReason = null;
+        stopAborts = false;
         plan = List.of();
         step = 0;
         scheduler.send(arc.task, task);
     }
 
-    /** Asks RefArc to give up the current task at its next step, for {@code reason}. */
+    /** Asks RefArc to give up the current task at its next step, for {@code reason}; the service queues it again. */
     synchronized void stop(String reason) {
         if (currentTask != null) {
             stopReason = reason;
         }
+    }
+
+    /** Asks RefArc to give up the current task at its next step, for {@code reason}, to end aborted (the robot is gone). */
+    synchronized void stopAborting(String reason) {
+        if (currentTask != null) {
+            stopReason = reason;
+            stopAborts = true;
+        }
+    }
+
+    /** Whether the current stop ends the task aborted (see {@link #stopAborting}). */
+    boolean stopAborts() {
+        return stopAborts;
     }
 
     /** The current task ended (completed or aborted): the lane takes the next. */
@@ -170,6 +203,7 @@ final class RobotLane implements AutoCloseable {
             currentTask = null;
             currentCall = null;
             stopReason = null;
+            stopAborts = false;
             plan = List.of();
             step = 0;
         }

@@ -97,9 +97,19 @@ public final class TriadService implements AutoCloseable {
         TrafficBoard traffic = new TrafficBoard(); // the robots' traffic controls show their waits here (operator page)
         try {
             AccessTokens tokens = AccessTokens.load(o.env(), o.config(), store);
-            robots = connect(models, o, traffic);
+            FleetRoster roster = new FleetRoster();
+            robots = connect(models, o, roster, traffic);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
+            roster.attach(fleet);
+            java.util.Optional<ChargingPolicy> charging = ChargingPolicy.of(Thread.currentThread().getContextClassLoader());
+            if (charging.isPresent()) {
+                try {
+                    fleet.useCharging(charging.get());
+                } catch (ServiceError e) {
+                    throw ServiceError.startup(ChargingPolicy.RESOURCE + ": charging.task: " + e.getMessage());
+                }
+            }
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
             HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https).showing(traffic);
             int port;
@@ -143,13 +153,8 @@ public final class TriadService implements AutoCloseable {
         return "cannot listen on " + o.host() + ":" + o.port() + ": " + e.getMessage();
     }
 
-    /** The robots the options name, through the providers on the class path. */
-    static List<FleetRobot> connect(ApplicationModels models, Options o) {
-        return connect(models, o, new TrafficBoard());
-    }
-
     /** The robots the options name; providers whose robots run under traffic control show their waits on {@code traffic}. */
-    static List<FleetRobot> connect(ApplicationModels models, Options o, TrafficBoard traffic) {
+    static List<FleetRobot> connect(ApplicationModels models, Options o, FleetRoster roster, TrafficBoard traffic) {
         AppSchema schema = models.schema();
         List<RobotPlatformProvider> providers = new ArrayList<>();
         ServiceLoader.load(RobotPlatformProvider.class).forEach(providers::add);
@@ -170,6 +175,7 @@ public final class TriadService implements AutoCloseable {
             start = State.builder().build(); // no situation in the models: the robots' observations fill the world
         }
         SharedWorld world = new SharedWorld(schema, start);
+        roster.building(world);
         if (o.situation() != null) {
             world.startAs(start); // the user named the building's situation: robots join it
         }
@@ -192,6 +198,11 @@ public final class TriadService implements AutoCloseable {
             @Override
             public TrafficBoard traffic() {
                 return traffic;
+            }
+
+            @Override
+            public org.triad.refarc.fleet.FleetChanges changes() {
+                return roster;
             }
         };
         List<FleetRobot> robots = new ArrayList<>();

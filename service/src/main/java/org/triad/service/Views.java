@@ -17,8 +17,22 @@ public final class Views {
     public record EventView(long id, String at, String kind, String robot, String text) {
     }
 
-    /** {@code offlineReason}: why the robot is out of dispatch (the operator, or tasks aborted on it in a row), or null. */
-    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason) {
+    /**
+     * {@code offlineReason}: why the robot is out of dispatch (the operator, tasks aborted on it in a row, its
+     * platform reporting it gone, or refused when it announced itself), or null; {@code presence}: online,
+     * offline (out of dispatch), gone or refused; {@code pose} and {@code battery} as its platform reports them, or null;
+     * {@code batteryNote}: why it gets no new task for its battery (the charging policy), or null.
+     */
+    public record RobotView(String name, boolean online, Long task, String call, List<String> plan, int step, boolean map, String offlineReason,
+            String presence, org.triad.refarc.fleet.Pose pose, org.triad.refarc.fleet.Battery battery, String batteryNote) {
+    }
+
+    /**
+     * The building's map: every robot (with its {@code pose}, whose {@code mapId} says the floor), and the
+     * layout (rooms, walls, doors, waypoints, items, people) the first robot with a floor map draws, on
+     * {@code layoutMap} (that robot's map id), or null when no platform draws one.
+     */
+    public record BuildingView(List<RobotView> robots, org.triad.refarc.fleet.FloorMap layout, String layoutMap) {
     }
 
     public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,

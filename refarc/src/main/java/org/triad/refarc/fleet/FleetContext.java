@@ -15,4 +15,9 @@ public interface FleetContext {
      * @throws IllegalArgumentException when there is no such situation
      */
     State situation(String name);
+
+    /** Where robots that come and go while the fleet runs are reported; {@link FleetChanges#NONE} without a running fleet. */
+    default FleetChanges changes() {
+        return FleetChanges.NONE;
+    }
 }

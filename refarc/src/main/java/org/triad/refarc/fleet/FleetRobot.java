@@ -23,6 +23,16 @@ public interface FleetRobot extends AutoCloseable {
         return Optional.empty();
     }
 
+    /** Where the robot is now, if its platform reports it: for the building's map. Called from other threads. */
+    default Optional<Pose> pose() {
+        return Optional.empty();
+    }
+
+    /** The robot's battery now, if its platform reports it: for the operator and the charging policy. Called from other threads. */
+    default Optional<Battery> battery() {
+        return Optional.empty();
+    }
+
     /** Releases the connection or simulation; the default does nothing. */
     @Override
     default void close() {

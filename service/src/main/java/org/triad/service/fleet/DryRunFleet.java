@@ -14,7 +14,7 @@ import org.triad.runtime.app.State;
  * Scheme {@code dry}, for every application: robots whose actions do exactly what their
  * postconditions say, in the fleet's one building (a {@link SharedWorld}: what one robot picks up is
  * gone for the others), like {@code ./triad run}. Argument
- * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]}: N robots starting where situation S puts the
+ * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K][,battery=P]} (a battery reported at P percent, for the charging policy): N robots starting where situation S puts the
  * robot (default: the service's situation), each action taking MS milliseconds, the first K calls of
  * ACTION failing on every robot, or every robot vanishing (its state can no longer be read) after K actions.
  */
@@ -35,7 +35,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K]  N robots that do what the postconditions say, over a situation";
+        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K][,battery=P]  N robots that do what the postconditions say, over a situation";
     }
 
     @Override
@@ -47,6 +47,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
         String failAction = null;
         int failCalls = 0;
         int goneAfter = -1;
+        int battery = -1;
         for (int i = 1; i < parts.length; i++) {
             String[] kv = parts[i].split("=", 2);
             if (kv.length != 2) {
@@ -57,6 +58,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
                 case "state" -> situation = value;
                 case "delay" -> delayMillis = number("dry:...,delay=MS", value, 0, 600_000);
                 case "gone" -> goneAfter = number("dry:...,gone=K", value, 0, Integer.MAX_VALUE);
+                case "battery" -> battery = number("dry:...,battery=PERCENT", value, 0, 100);
                 case "fail" -> {
                     String[] ak = value.split("\\*", 2);
                     failAction = ak[0].trim();
@@ -78,7 +80,11 @@ public final class DryRunFleet implements RobotPlatformProvider {
         List<FleetRobot> robots = new ArrayList<>();
         for (int i = 1; i <= n; i++) {
             String name = "dry-" + ++numbered;
-            robots.add(new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, goneAfter));
+            DryRunRobot r = new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, goneAfter);
+            if (battery >= 0) {
+                r.reportBattery(battery);
+            }
+            robots.add(r);
         }
         return robots;
     }

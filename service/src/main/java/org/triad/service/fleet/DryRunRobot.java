@@ -26,6 +26,8 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
     private final AtomicInteger failed = new AtomicInteger();
     private final AtomicInteger executed = new AtomicInteger();
     private volatile String lastFailure;
+    /** The battery this robot reports (percent, never charging), or null for none: {@code dry:...,battery=P}. */
+    private volatile org.triad.refarc.fleet.Battery battery;
 
     DryRunRobot(String name, ModelRobot body, long delayMillis, String failAction, int failCalls, int goneAfter) {
         this.name = name;
@@ -39,6 +41,15 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
     @Override
     public String name() {
         return name;
+    }
+
+    void reportBattery(double percent) {
+        battery = new org.triad.refarc.fleet.Battery(percent, false);
+    }
+
+    @Override
+    public Optional<org.triad.refarc.fleet.Battery> battery() {
+        return Optional.ofNullable(battery);
     }
 
     @Override

@@ -20,7 +20,9 @@
         requests: r => { showRequests(r); refreshAudit(); },
         task: refreshAudit,
         hello: d => d.robots.forEach(showRobot),
+        building: robots => { drawBuilding(robots); robots.forEach(showRobot); },
       });
+      loadBuilding();
       source.onopen = () => document.getElementById("connection").textContent = "live";
       source.onerror = () => document.getElementById("connection").textContent = "reconnecting...";
       setInterval(refreshMaps, 300);
@@ -88,13 +90,65 @@
       cards.set(r.name, card);
     }
     const plan = el("ol", { class: "plan" }, r.plan.map((a, i) => el("li", { class: i + 1 === r.step ? "current" : "" }, a)));
+    // gone (its platform says so) and refused robots come back by themselves, not by the operator's button
+    const state = r.presence === "gone" || r.presence === "refused" ? r.presence : r.online ? (r.task ? "busy" : "idle") : "offline";
+    card.root.dataset.presence = r.presence || "";
     card.info.replaceChildren(
-      el("div", {}, el("span", { class: "robot-state" }, r.online ? (r.task ? "busy" : "idle") : "offline"),
+      el("div", {}, el("span", { class: "robot-state" }, state),
         r.task ? [" with ", el("span", { class: "robot-task" }, "#" + r.task + " " + r.call)] : "",
-        " ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
-          r.online ? "Take offline" : "Put online")),
+        r.battery ? [" ", el("span", { class: "robot-battery" + (r.battery.charging ? " charging" : "") }, "battery " + Math.round(r.battery.charge) + " %" + (r.battery.charging ? ", charging" : ""))] : "",
+        r.presence === "refused" || r.presence === "gone" ? "" : [" ", el("button", { class: r.online ? "offline" : "online", onclick: () => api("POST", "/api/robots/" + r.name + "/" + (r.online ? "offline" : "online")).then(showRobot).catch(e => msg.textContent = e.message) },
+          r.online ? "Take offline" : "Put online")]),
       r.offlineReason ? el("div", { class: "robot-offline-reason" }, r.offlineReason) : "",
+      r.batteryNote ? el("div", { class: "robot-battery-note" }, r.batteryNote) : "",
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
+  }
+
+  // one live map of the building: every robot where its platform reports it, one canvas per map id (floor),
+  // on the layout the first robot with a floor map draws; positions come with the event stream's "building" events
+  let layout = null, layoutMap = "";
+  async function loadBuilding() {
+    try {
+      const b = await api("GET", "/api/building");
+      layout = b.layout;
+      layoutMap = b.layoutMap || "";
+      drawBuilding(b.robots);
+    } catch (e) {
+      msg.textContent = e.message;
+    }
+  }
+
+  function drawBuilding(robots) {
+    const box = document.getElementById("building");
+    const placed = robots.filter(r => r.pose);
+    document.getElementById("no-positions").hidden = placed.length > 0;
+    const floors = new Map();
+    if (layout) floors.set(layoutMap, []);
+    for (const r of placed) {
+      const id = r.pose.mapId || "";
+      if (!floors.has(id)) floors.set(id, []);
+      floors.get(id).push(r);
+    }
+    for (const [id, rs] of floors) {
+      let canvas = [...box.querySelectorAll("canvas")].find(c => c.dataset.map === id);
+      if (!canvas) {
+        canvas = el("canvas", { class: "floor building-floor", "data-map": id });
+        box.append(el("figure", {}, el("figcaption", {}, id ? "map " + id : "map"), canvas));
+      }
+      const marks = rs.map(r => ({ name: r.name, x: r.pose.x, y: r.pose.y,
+        note: [r.presence !== "online" ? r.presence : null, r.battery ? Math.round(r.battery.charge) + " %" : null, r.task ? "#" + r.task : null].filter(x => x).join(", ") }));
+      const base = layout && id === layoutMap ? layout : around(marks);
+      FloorMap.draw(canvas, Object.assign({}, base, { robots: marks }));
+      canvas.dataset.robots = marks.map(m => m.name).sort().join(" ");
+      canvas.dataset.updates = String(Number(canvas.dataset.updates || 0) + 1);
+    }
+  }
+
+  // a floor without a layout: just room around its robots
+  function around(marks) {
+    const xs = marks.map(m => m.x), ys = marks.map(m => m.y);
+    return { time: 0, bounds: { minX: Math.min(...xs) - 5, minY: Math.min(...ys) - 5, maxX: Math.max(...xs) + 5, maxY: Math.max(...ys) + 5 },
+      areas: [], walls: [], doors: [], waypoints: [], items: [], people: [] };
   }
 
   let auditBusy = false;

@@ -2,9 +2,12 @@ package org.triad.vda5050.master;
 
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
+
+import com.fasterxml.jackson.databind.JsonNode;
 
 import org.triad.vda5050.mqtt.MqttLink;
 import org.triad.vda5050.mqtt.Received;
@@ -36,6 +39,10 @@ public final class MasterControl implements AutoCloseable {
     private final Set<String> unknownReported = ConcurrentHashMap.newKeySet();
     /** Every AGV heard on the connection topic (known or not), with the last connection state it reported: discovery. */
     private final Map<String, ConnectionState> announced = new ConcurrentHashMap<>();
+    /** The last factsheet of every AGV heard on the factsheet topic (it is retained, so it comes before anyone asks for the AGV). */
+    private final Map<String, JsonNode> factsheets = new ConcurrentHashMap<>();
+    /** Whether an {@link AgvDiscovery} reports the AGVs this master was not asked for (then they are not "unknown"). */
+    private volatile boolean discovering;
 
     private MasterControl(MqttLink link, VdaTimeouts timeouts, Consumer<String> log) {
         this.link = link;
@@ -91,13 +98,25 @@ public final class MasterControl implements AutoCloseable {
         return Map.copyOf(announced);
     }
 
+    /** The last factsheet the AGV of this manufacturer and serial number published on this broker, if any. */
+    public Optional<JsonNode> factsheet(String manufacturer, String serialNumber) {
+        return Optional.ofNullable(factsheets.get(manufacturer + "/" + serialNumber));
+    }
+
+    /** Called by {@link AgvDiscovery}: AGVs nobody asked for are its business, not worth a line each. */
+    void discovering() {
+        discovering = true;
+    }
+
     private void route(Received r) {
         if (r.address().topic() == Topic.CONNECTION) {
             announced.put(r.address().manufacturer() + "/" + r.address().serialNumber(), r.as(Connection.class).connectionState());
+        } else if (r.address().topic() == Topic.FACTSHEET) {
+            factsheets.put(r.address().manufacturer() + "/" + r.address().serialNumber(), r.json());
         }
         RemoteAgv agv = agvs.get(r.address().manufacturer() + "/" + r.address().serialNumber());
         if (agv == null) {
-            if (unknownReported.add(r.address().manufacturer() + "/" + r.address().serialNumber())) {
+            if (!discovering && unknownReported.add(r.address().manufacturer() + "/" + r.address().serialNumber())) {
                 log.accept("vda5050: ignored " + r.address().topic().leaf() + " from unknown AGV " + r.address().manufacturer() + "/"
                         + r.address().serialNumber() + " on " + r.mqttTopic() + " (no robot of this master has that serial number)");
             }

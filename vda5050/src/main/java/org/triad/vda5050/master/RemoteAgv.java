@@ -166,6 +166,35 @@ public final class RemoteAgv implements FailureExplaining {
         return (connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE) && connectionNanos >= stateNanos;
     }
 
+    /**
+     * For how long the AGV has been down as far as this master can tell (see {@link #awaitOnline()}), in
+     * seconds; 0 while it is not, and while this master is disconnected itself (the AGV cannot be judged
+     * then), counting from this master's reconnection when that came later (after a broker restart the
+     * AGV's ONLINE follows ours).
+     */
+    public double secondsDown() {
+        synchronized (lock) {
+            if (!down() || !link.isConnected()) {
+                return 0;
+            }
+            return (System.nanoTime() - Math.max(connectionNanos, masterReconnectNanos)) / 1e9;
+        }
+    }
+
+    /**
+     * Waits until the AGV's state shows no order in progress (no node or edge states, not driving), at most
+     * {@code seconds}, less if it falls silent for the state timeout: called between this master's own
+     * orders, it waits for an order that another master control sent before (a service killed mid-order and
+     * started again), so that what is read next is where that order left the AGV, not where it began.
+     * Returns whether the AGV is at rest.
+     */
+    public boolean awaitAtRest(double seconds) {
+        long began = System.nanoTime();
+        return await(() -> state == null || state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving()
+                || System.nanoTime() - Math.max(began, stateNanos) > seconds(timeouts.stateSeconds()), seconds)
+                && state().map(s -> s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving()).orElse(true);
+    }
+
     /** Whether the AGV reports state and its connection is not known broken (see {@link #awaitOnline()}). */
     public boolean isOnline() {
         synchronized (lock) {

@@ -11,6 +11,7 @@ import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.FloorMap;
+import org.triad.refarc.fleet.Pose;
 import org.triad.sim.Door;
 import org.triad.sim.FloorPlan;
 import org.triad.sim.Item;
@@ -103,6 +104,21 @@ final class SimulatedHospitalRobot implements FleetRobot {
                 Thread.currentThread().interrupt();
             }
         }
+    }
+
+    @Override
+    public Optional<Pose> pose() {
+        return map.robots().stream().filter(m -> m.name().equals(name)).findFirst()
+                .map(m -> new Pose(m.x(), m.y(), 0, org.triad.examples.hospital.vda5050.SimulatedAgv.MAP_ID));
+    }
+
+    /**
+     * The hospital's floor without robots, items and people, for platforms that report where their robots
+     * are but draw no map (VDA 5050 couriers): the same rooms, walls, doors and waypoints as the simulation's.
+     */
+    static FloorMap layout() {
+        FloorMap m = snapshot(new HospitalSimulation(0, false).sim(), "");
+        return new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), List.of(), List.of(), List.of());
     }
 
     /** The floor now; the courier is labelled with its name in the fleet. */

@@ -3,29 +3,38 @@ package org.triad.examples.hospital.fleet;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.TreeMap;
-import java.util.concurrent.atomic.AtomicInteger;
 
 import org.triad.examples.hospital.vda5050.VdaHospital;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
+import org.triad.refarc.fleet.Battery;
+import org.triad.refarc.fleet.FleetChanges;
 import org.triad.refarc.fleet.FleetContext;
 import org.triad.refarc.fleet.FleetRobot;
+import org.triad.refarc.fleet.FloorMap;
+import org.triad.refarc.fleet.Pose;
 import org.triad.refarc.fleet.RobotPlatformProvider;
+import org.triad.vda5050.master.AgvDiscovery;
 import org.triad.vda5050.master.MasterControl;
+import org.triad.vda5050.master.RemoteAgv;
 import org.triad.vda5050.master.VdaTimeouts;
-import org.triad.vda5050.protocol.Messages.ConnectionState;
 
 import generated.hospital.HospitalActionExecutor;
 import generated.hospital.HospitalStateProvider;
 
 /**
- * Scheme {@code vda5050} of the hospital application: {@code vda5050:tcp://HOST:PORT[,wait=S]} drives
- * every hospital courier (manufacturer {@code triad}) that is ONLINE on that broker, found on the
- * {@code connection} topic within S seconds (default 2), through one {@link MasterControl}. Each is a
- * robot of the fleet named after its serial number, whose state is what the AGV reports (its last node,
- * its loads) and whose actions are VDA 5050 orders ({@code ./triad robot --broker URL --count N} starts
- * such AGVs).
+ * Scheme {@code vda5050} of the hospital application: {@code vda5050:tcp://HOST:PORT[,wait=S][,allow=P+P]}
+ * drives every hospital courier (manufacturer {@code triad}) that is ONLINE on that broker, found on the
+ * {@code connection} topic within S seconds (default 2), and those that come later, through one
+ * {@link MasterControl} and its {@link AgvDiscovery}: an AGV must publish a factsheet listing the actions
+ * the couriers are sent ({@link #REQUIRED_ACTIONS}), report a state on a waypoint of the hospital and,
+ * with {@code allow}, have a serial number matching one of the patterns ({@code *} for any characters);
+ * otherwise it is refused with the reason. Each is a robot of the fleet named after its serial number,
+ * whose state is what the AGV reports (its last node, its loads, its position and battery) and whose
+ * actions are VDA 5050 orders ({@code ./triad robot --broker URL --count N} starts such AGVs). One that
+ * goes OFFLINE or CONNECTIONBROKEN for longer than the reconnect grace leaves the fleet until it is back.
  */
 public final class VdaHospitalFleet implements RobotPlatformProvider {
     public static final double DEFAULT_WAIT_SECONDS = 2;
@@ -42,7 +51,7 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "vda5050:tcp://HOST:PORT[,wait=S]  the hospital couriers ONLINE on that VDA 5050 broker";
+        return "vda5050:tcp://HOST:PORT[,wait=S][,allow=SERIAL+SERIAL*]  the hospital couriers ONLINE on that VDA 5050 broker, and those that come later";
     }
 
     @Override
@@ -50,8 +59,16 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         String[] parts = argument.split(",");
         String broker = parts[0].trim();
         double wait = DEFAULT_WAIT_SECONDS;
+        List<String> allowed = List.of();
         for (int i = 1; i < parts.length; i++) {
             String[] kv = parts[i].split("=", 2);
+            if (kv.length == 2 && kv[0].trim().equals("allow")) {
+                allowed = List.of(kv[1].trim().split("\\+"));
+                if (allowed.stream().anyMatch(a -> !a.matches("[A-Za-z0-9_*-]+"))) {
+                    throw new IllegalArgumentException("vda5050:...,allow=S1+S2 takes serial numbers (letters, digits, '-', '_', '*' for any), not '" + kv[1] + "'");
+                }
+                continue;
+            }
             if (kv.length != 2 || !kv[0].trim().equals("wait")) {
                 throw new IllegalArgumentException("vda5050: unknown option '" + parts[i] + "'; " + usage());
             }
@@ -64,33 +81,147 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
                 throw new IllegalArgumentException("vda5050:...,wait=S takes 0 to 600 seconds, not " + kv[1]);
             }
         }
-        MasterControl master = MasterControl.connect(broker, VdaTimeouts.defaults(), line -> System.err.println("triad serve: " + line));
+        VdaTimeouts timeouts = VdaTimeouts.defaults();
+        MasterControl master = MasterControl.connect(broker, timeouts, line -> System.err.println("triad serve: " + line));
+        Roster roster = new Roster(master, context.changes());
+        AgvDiscovery discovery = new AgvDiscovery(master, new AgvDiscovery.Requirements(MasterControl.TRIAD, allowed, REQUIRED_ACTIONS,
+                Math.max(wait, FACTSHEET_SECONDS), timeouts.reconnectGraceSeconds()), roster, line -> System.err.println("triad serve: " + line));
         long deadline = System.nanoTime() + (long) (wait * 1e9);
         while (System.nanoTime() < deadline) {
             Thread.sleep(50);
         }
-        Map<String, ConnectionState> online = new TreeMap<>();
-        master.announced().forEach((agv, state) -> {
-            if (agv.startsWith(MasterControl.TRIAD + "/") && state == ConnectionState.ONLINE) {
-                online.put(agv.substring(MasterControl.TRIAD.length() + 1), state);
-            }
+        // the AGVs announced by then are decided on before the service starts (their first state may be a moment late)
+        long settle = System.nanoTime() + (long) (FACTSHEET_SECONDS * 1e9) + 2 * AgvDiscovery.POLL_MILLIS * 1_000_000L;
+        while (!discovery.settled() && System.nanoTime() < settle) {
+            Thread.sleep(50);
+        }
+        List<FleetRobot> robots = roster.handOver(() -> {
+            discovery.close();
+            master.close();
         });
-        if (online.isEmpty()) {
+        if (robots.isEmpty()) {
+            discovery.close();
             master.close();
             throw new IllegalStateException("no hospital courier (manufacturer '" + MasterControl.TRIAD + "') announced itself ONLINE on " + broker
-                    + " within " + wait + " s (topic uagv/v2/" + MasterControl.TRIAD + "/+/connection); start them with './triad robot --broker "
-                    + broker + " --count N'");
-        }
-        AtomicInteger open = new AtomicInteger(online.size());
-        List<FleetRobot> robots = new ArrayList<>();
-        for (String serial : online.keySet()) {
-            robots.add(new Courier(serial, new VdaHospital(master, serial), () -> {
-                if (open.decrementAndGet() == 0) {
-                    master.close();
-                }
-            }));
+                    + " within " + wait + " s (topic uagv/v2/" + MasterControl.TRIAD + "/+/connection)" + roster.refusals()
+                    + "; start them with './triad robot --broker " + broker + " --count N'");
         }
         return robots;
+    }
+
+    /** The hospital's rooms, walls, doors and waypoints, taken from the simulation once, when the first courier draws its map. */
+    private static final java.util.function.Supplier<FloorMap> LAYOUT = new java.util.function.Supplier<>() {
+        private FloorMap layout;
+
+        @Override
+        public synchronized FloorMap get() {
+            if (layout == null) {
+                layout = SimulatedHospitalRobot.layout();
+            }
+            return layout;
+        }
+    };
+
+    /** The actions {@link org.triad.examples.hospital.vda5050.VdaCourier} sends: an AGV whose factsheet lacks one cannot serve the hospital. */
+    static final java.util.Set<String> REQUIRED_ACTIONS = java.util.Set.of("pick", "drop", "guide", "startFollowing");
+    /** How long reading a courier's state waits for an order a previous master sent to end (one edge at walking speed and more). */
+    static final double AT_REST_SECONDS = 60;
+    /** How long an AGV that announced itself may take to publish its factsheet and first state. */
+    static final double FACTSHEET_SECONDS = 5;
+
+    /**
+     * The discovery's reports as the fleet's: the couriers that joined before the service took over are
+     * handed over as its first robots, later ones join the running fleet; a joined AGV whose reported node
+     * is not a waypoint of the hospital is refused.
+     */
+    private static final class Roster implements AgvDiscovery.Listener {
+        private final MasterControl master;
+        private final FleetChanges changes;
+        private final Map<String, Courier> couriers = new TreeMap<>();
+        private final Map<String, String> refused = new TreeMap<>();
+        private List<FleetRobot> early = new ArrayList<>();
+        private Runnable closeAll;
+        private int open;
+
+        Roster(MasterControl master, FleetChanges changes) {
+            this.master = master;
+            this.changes = changes;
+        }
+
+        synchronized List<FleetRobot> handOver(Runnable closeAll) {
+            this.closeAll = closeAll;
+            List<FleetRobot> first = early;
+            early = null;
+            first.sort(java.util.Comparator.comparing(FleetRobot::name)); // fleet order by name, not by who answered first
+            return first;
+        }
+
+        synchronized String refusals() {
+            return refused.isEmpty() ? "" : "; refused: " + refused.entrySet().stream().map(e -> e.getKey() + " (" + e.getValue() + ")").toList();
+        }
+
+        @Override
+        public Optional<String> appeared(RemoteAgv agv) {
+            Courier c;
+            synchronized (this) {
+                c = couriers.get(agv.serialNumber());
+                if (c == null) {
+                    c = new Courier(agv.serialNumber(), new VdaHospital(master, agv.serialNumber()), this::closed);
+                }
+            }
+            try {
+                c.stateSource().currentState();
+            } catch (Exception e) {
+                return Optional.of("the hospital cannot read its state: " + e.getMessage());
+            }
+            synchronized (this) {
+                refused.remove(agv.serialNumber());
+                if (couriers.put(agv.serialNumber(), c) == null) {
+                    open++;
+                }
+                if (early != null) {
+                    early.add(c);
+                    return Optional.empty();
+                }
+            }
+            changes.joined(c);
+            return Optional.empty();
+        }
+
+        @Override
+        public void gone(RemoteAgv agv, String reason) {
+            changes.left(agv.serialNumber(), reason);
+        }
+
+        @Override
+        public void back(RemoteAgv agv) {
+            Courier c;
+            synchronized (this) {
+                c = couriers.get(agv.serialNumber());
+            }
+            if (c != null) {
+                changes.joined(c);
+            }
+        }
+
+        @Override
+        public void refused(String serialNumber, String reason) {
+            synchronized (this) {
+                refused.put(serialNumber, reason);
+            }
+            changes.refused(serialNumber, reason);
+        }
+
+        /** The service closes each robot once; the connection goes with the last. */
+        private void closed() {
+            Runnable all;
+            synchronized (this) {
+                all = --open <= 0 ? closeAll : null;
+            }
+            if (all != null) {
+                all.run();
+            }
+        }
     }
 
     /** One AGV as a robot of the fleet: the generated StateProvider and ActionExecutor over the VDA 5050 binding. */
@@ -100,10 +231,20 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         private final ActionRunner actions;
         private final Runnable onClose;
 
+        private final RemoteAgv agv;
+
         Courier(String name, VdaHospital agv, Runnable onClose) {
             this.name = name;
             this.onClose = onClose;
-            this.state = new HospitalStateProvider(agv.courier(), agv.building());
+            this.agv = agv.courier().agv();
+            StateSource generated = new HospitalStateProvider(agv.courier(), agv.building());
+            RemoteAgv remote = agv.courier().agv();
+            // read between the fleet's own orders: an order still running was sent by a master before (a service
+            // restarted mid-task), so the state is read where that order leaves the AGV, and its moves are not sent again
+            this.state = () -> {
+                remote.awaitAtRest(AT_REST_SECONDS);
+                return generated.currentState();
+            };
             this.actions = new HospitalActionExecutor(agv.courier(), agv.building());
         }
 
@@ -120,6 +261,27 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         @Override
         public ActionRunner actionRunner() {
             return actions;
+        }
+
+        @Override
+        public Optional<Pose> pose() {
+            return agv.state().map(s -> s.agvPosition()).filter(p -> p != null && p.positionInitialized())
+                    .map(p -> new Pose(p.x(), p.y(), p.theta(), p.mapId()));
+        }
+
+        /** The hospital's layout with this courier where its state says it is (a VDA 5050 AGV draws no map). */
+        @Override
+        public Optional<FloorMap> floor() {
+            FloorMap m = LAYOUT.get();
+            Optional<Pose> p = pose();
+            List<FloorMap.Mark> robots = p.map(q -> List.of(new FloorMap.Mark(name, q.x(), q.y(), agv.state().map(s -> s.loads() == null ? ""
+                    : String.join(", ", s.loads().stream().map(l -> l.loadId()).toList())).orElse("")))).orElse(List.of());
+            return Optional.of(new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), robots, List.of(), List.of()));
+        }
+
+        @Override
+        public Optional<Battery> battery() {
+            return agv.state().map(s -> s.batteryState()).filter(b -> b != null).map(b -> new Battery(b.batteryCharge(), b.charging()));
         }
 
         @Override

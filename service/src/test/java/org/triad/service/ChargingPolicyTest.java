@@ -1,0 +1,77 @@
+package org.triad.service;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.Supplier;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+/**
+ * The charging policy from the application's {@code application.properties}, on dry-run robots that
+ * report a battery ({@code dry:1,battery=10}): a robot below the threshold gets no new task (the other
+ * robot does them), the configured charging task is queued for it once, first in line, and runs on it;
+ * the operator sees why; a charging task that does not fit the models stops the start with the reason.
+ */
+class ChargingPolicyTest {
+    @TempDir
+    Path dir;
+
+    private <T> T withProperties(String properties, Supplier<T> start) throws Exception {
+        Path app = dir.resolve("app");
+        Files.createDirectories(app.resolve("META-INF/triad"));
+        Files.writeString(app.resolve(ChargingPolicy.RESOURCE), properties);
+        Thread t = Thread.currentThread();
+        ClassLoader before = t.getContextClassLoader();
+        try (URLClassLoader loader = new URLClassLoader(new URL[] { app.toUri().toURL() }, before)) {
+            t.setContextClassLoader(loader);
+            return start.get();
+        } finally {
+            t.setContextClassLoader(before);
+        }
+    }
+
+    @Test
+    void aRobotLowOnBatteryGetsNoNewTaskAndIsSentToChargeOnce() throws Exception {
+        try (ServiceFixture s = withProperties("charging.below=20\ncharging.task=GoTo\ncharging.args={\"dst\": \"lobby\"}\n",
+                () -> ServiceFixture.start(dir.resolve("db"), "dry:1,state=Morning,delay=20", "dry:1,battery=10,delay=20"))) {
+            // the charging task for dry-2 comes first, on its own
+            JsonNode charging = s.awaitTask(1, t -> t.path("state").asText().equals("completed"));
+            assertEquals("dry-2", charging.get("robot").asText(), charging.toString());
+            assertEquals("GoTo", charging.get("task").asText());
+            assertEquals(100, charging.get("priority").asInt());
+            assertTrue(charging.get("events").get(0).get("text").asText().contains("robot dry-2 reports 10 % battery, below 20 %; sent to charge"),
+                    charging.toString());
+
+            long a = s.submit("GoTo", "{\"dst\": \"ward1\"}");
+            long b = s.submit("GoTo", "{\"dst\": \"ward2\"}");
+            assertEquals("dry-1", s.awaitState(a, "completed").get("robot").asText());
+            assertEquals("dry-1", s.awaitState(b, "completed").get("robot").asText(), "the robot low on battery took no new task");
+            assertEquals(3, s.get("/api/tasks", ServiceFixture.SUBMIT).body().size(), "one charging task, not one per round");
+            JsonNode dry2 = null;
+            for (JsonNode r : s.get("/api/robots", ServiceFixture.OPERATOR).body()) {
+                if (r.get("name").asText().equals("dry-2")) {
+                    dry2 = r;
+                }
+            }
+            assertEquals(10, dry2.get("battery").get("charge").asInt());
+            assertEquals("battery 10 % is below 20 %: no new task; sent to charge (task 1)", dry2.get("batteryNote").asText());
+        }
+    }
+
+    @Test
+    void aChargingTaskThatDoesNotFitTheModelsStopsTheStartWithTheReason() throws Exception {
+        ServiceError e = assertThrows(ServiceError.class, () -> withProperties("charging.below=20\ncharging.task=Recharge\n",
+                () -> ServiceFixture.start(dir.resolve("db"), "dry:1")));
+        assertTrue(e.getMessage().startsWith("META-INF/triad/application.properties: charging.task: "), e.getMessage());
+        assertTrue(e.getMessage().contains("Recharge"), e.getMessage());
+    }
+}
