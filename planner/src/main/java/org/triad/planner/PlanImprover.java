@@ -42,6 +42,7 @@ final class PlanImprover {
     private boolean shortest;
     private boolean timedOut;
     private PlanNeighbourhoodSearch neighbourhood;
+    private final java.util.function.Supplier<? extends FfHeuristic> additiveSource;
     private FfHeuristic additive;
 
     /**
@@ -53,6 +54,13 @@ final class PlanImprover {
      */
     PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations,
                  long workBudget) {
+        this(task, heuristic, () -> new AdditiveFfHeuristic(task), successors, deadlineNanos, effort, searchEvaluations, workBudget);
+    }
+
+    /** @param additive the FF heuristic with h^add supporters, asked for when first needed (a solve's scratch one: made once per task) */
+    PlanImprover(SearchTask task, FfHeuristic heuristic, java.util.function.Supplier<? extends FfHeuristic> additive, Successors successors,
+                 long deadlineNanos, long[] effort, long searchEvaluations, long workBudget) {
+        this.additiveSource = additive;
         this.searchEvaluations = searchEvaluations;
         this.workBudget = workBudget;
         this.meter = new WorkMeter(heuristic, successors);
@@ -141,10 +149,10 @@ final class PlanImprover {
         return shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
     }
 
-    /** The FF heuristic with h^add supporters, made once and counted by the meter. */
+    /** The FF heuristic with h^add supporters, counted by the meter from the moment it is first used. */
     private FfHeuristic additive() {
         if (additive == null) {
-            additive = new AdditiveFfHeuristic(task);
+            additive = additiveSource.get();
             meter.add(additive);
         }
         return additive;

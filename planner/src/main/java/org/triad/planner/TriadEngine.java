@@ -162,7 +162,7 @@ public final class TriadEngine implements PddlPlanner {
             SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
             SearchTask.Scratch scratch = task.takeScratch();
             try {
-                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline);
+                return search(q, task, scratch, groundMs, searchStart, deadline);
             } finally {
                 task.returnScratch(scratch);
             }
@@ -177,8 +177,10 @@ public final class TriadEngine implements PddlPlanner {
         return "out of memory in " + phase + ": the task needs more than the memory given (" + (Runtime.getRuntime().maxMemory() >> 20) + " MB)";
     }
 
-    private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
+    private SolveResult search(GroundedProblem.Query q, SearchTask task, SearchTask.Scratch scratch, double groundMs,
                               long searchStart, long deadline) {
+        FfHeuristic h = scratch.heuristic();
+        Successors succ = scratch.successors();
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
         WorkMeter meter = new WorkMeter(h, succ);
         long workAtStart = meter.now();
@@ -270,7 +272,7 @@ public final class TriadEngine implements PddlPlanner {
             long budget = Math.min(improvementCap, IMPROVEMENT_WORK_FACTOR * firstPlan + extra);
             long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
                     open.size() <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
-            PlanImprover improver = new PlanImprover(task, h, succ, deadline, effort, evaluations, budget);
+            PlanImprover improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
             plan = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
             bestSoFar = improver.timedOut();
         }
