@@ -63,10 +63,10 @@ public final class TriadEngine implements PddlPlanner {
 
     /**
      * Default cap on the work spent making a first plan shorter ({@link PlanImprover}), in
-     * {@link WorkMeter} units: about 5 s of one core (the time cap it replaces was 10 s of wall
-     * time, which on a loaded machine bought less).
+     * {@link WorkMeter} units: about 10 s of one core, reached only by first plans of more than about
+     * 300 steps (the time cap it replaces was 10 s of wall time, which on a loaded machine bought less).
      */
-    public static final long IMPROVEMENT_CAP = 5 * WorkMeter.UNITS_PER_SECOND;
+    public static final long IMPROVEMENT_CAP = 10 * WorkMeter.UNITS_PER_SECOND;
     /**
      * Work granted to improving a plan of several goals, besides the work to the first plan:
      * enough for the lazy search and a few rounds of neighbourhood search on small tasks (about
@@ -94,11 +94,13 @@ public final class TriadEngine implements PddlPlanner {
     static final long IMPROVEMENT_EVALUATION_FACTOR = 5;
     static final long IMPROVEMENT_MIN_EVALUATIONS = 1000;
     /**
-     * Work granted per step of a first plan of several goals ({@link WorkMeter} units, about 10 ms):
-     * a 100-step plan gets about 1 s worth more, within {@link #IMPROVEMENT_CAP} (elevators p22:
-     * 117 steps to 93, Fast Downward 96; logistics 10-0 costs 0.7 s of CPU instead of 0.04 s).
+     * Work granted to improving a first plan of several goals per square of its length
+     * ({@link WorkMeter} units): a longer plan needs more evaluations, each on a larger task, so a
+     * 60-step plan gets about 0.4 s worth more, 117 steps 1.4 s, 250 steps 6 s, within
+     * {@link #IMPROVEMENT_CAP} (elevators p22 117 steps to 93, p30 252 to 209, tpp p28 to 228; Fast
+     * Downward 96, 207, 238).
      */
-    static final long IMPROVEMENT_WORK_PER_STEP = WorkMeter.UNITS_PER_SECOND / 100;
+    static final long IMPROVEMENT_WORK_PER_SQUARED_STEP = WorkMeter.UNITS_PER_SECOND / 10_000;
     /** Evaluations each improving search may use per step of such a plan (elevators p22 needs 45). */
     static final long IMPROVEMENT_EVALUATIONS_PER_STEP = 60;
 
@@ -265,11 +267,13 @@ public final class TriadEngine implements PddlPlanner {
         } else {
             long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
             // a single goal's A* plan is near shortest: no extra work, so small goals stay fast
-            // several goals: a little more, and more where the plan is long (a cheap first plan of
-            // hundreds of steps, as the agenda finds for logistics or elevators, is where
-            // improving pays: its searches need tens of evaluations per step)
-            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK + IMPROVEMENT_WORK_PER_STEP * plan.length;
-            long budget = Math.min(improvementCap, IMPROVEMENT_WORK_FACTOR * firstPlan + extra);
+            // several goals: a little more; and where the goal agenda found the plan, more the longer
+            // it is (a cheap first plan of hundreds of steps, as the agenda finds for elevators or tpp,
+            // is where improving pays). A plan that was costly to find (the portfolio's) gets twice its
+            // work, at most half the cap, so that improving it does not double a long search (depot).
+            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK
+                    + (fromAgenda ? IMPROVEMENT_WORK_PER_SQUARED_STEP * plan.length * plan.length : 0);
+            long budget = Math.min(improvementCap, Math.min(improvementCap / 2, IMPROVEMENT_WORK_FACTOR * firstPlan) + extra);
             long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
                     open.size() <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
             PlanImprover improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
