@@ -35,6 +35,11 @@ final class Landmarks {
     private int epoch;
 
     Landmarks(SearchTask task, int[] init, int[] goalPos, long deadline) {
+        this(task, init, goalPos, deadline, true);
+    }
+
+    /** @param disjunctive whether to look for disjunctive landmarks too (each costs a relaxed exploration) */
+    Landmarks(SearchTask task, int[] init, int[] goalPos, long deadline, boolean disjunctive) {
         // over the relaxed operators: a conditional achiever needs its condition too
         RelaxedOps t = task.relaxed;
         int nf = t.size;
@@ -44,7 +49,7 @@ final class Landmarks {
         Arrays.fill(simpleOf, -1);
         List<int[]> nodes = new ArrayList<>();
         List<List<Integer>> kids = new ArrayList<>();
-        Map<IntKey, Integer> disjunctive = new HashMap<>();
+        Map<IntKey, Integer> disjunctions = new HashMap<>();
         boolean[] inInit = new boolean[nf];
         for (int f : init) inInit[f] = true;
         for (int g : goalPos) addSimple(g, simpleOf, nodes, kids);
@@ -83,6 +88,7 @@ final class Landmarks {
                 int lp = addSimple(p, simpleOf, nodes, kids);
                 if (!kids.get(lp).contains(qi)) kids.get(lp).add(qi);
             }
+            if (!disjunctive) continue;
             // disjunctions: per predicate, one precondition fact from every first achiever
             Map<Integer, int[]> byPredicate = new java.util.TreeMap<>();
             boolean first = true;
@@ -106,10 +112,10 @@ final class Landmarks {
                 for (int f : set) usable &= !inInit[f];
                 if (!usable) continue;
                 IntKey key = new IntKey(set);
-                Integer lp = disjunctive.get(key);
+                Integer lp = disjunctions.get(key);
                 if (lp == null) {
                     lp = nodes.size();
-                    disjunctive.put(key, lp);
+                    disjunctions.put(key, lp);
                     nodes.add(set);
                     kids.add(new ArrayList<>());
                 }

@@ -25,6 +25,8 @@ package org.triad.planner;
 final class PlanImprover {
     /** Restarts as {g weight, h weight}: greedy, then weighted A* as in LAMA's later iterations. */
     static final int[][] RESTARTS = {{0, 1}, {1, 5}, {1, 3}, {1, 2}};
+    /** Plans at least this long get the lazy search on h^add supporters and disjunctive landmarks, shorter ones not. */
+    static final int ADDITIVE_LAZY_STEPS = 20;
     /** Largest plan neighbourhood explored (states) ... */
     static final int NEIGHBOURHOOD_STATES = 200_000;
     /** ... and at most this many facts stored in its states, a memory bound of about 64 MB. */
@@ -83,7 +85,11 @@ final class PlanImprover {
             // LAMA's first iteration with h^add supporters (Fast Downward's FF): the better guide
             // where achievers differ in what they need (elevators p22 110 steps, 120 with level
             // supporters; tpp p25 217 against 231), rarely worse, and at half the evaluations
-            best = lazy(additive(), new Landmarks(task, init, goalPos, deadline), init, goalPos, goalNeg, best);
+            // (a short plan keeps the level supporters and simple landmarks: each evaluation and the
+            // landmarks cost less, and a robot's goal of a few steps, such as the hospital's FollowedTo,
+            // would pay a third more for nothing)
+            boolean shortPlan = best.length < ADDITIVE_LAZY_STEPS;
+            best = lazy(shortPlan ? heuristic : additive(), new Landmarks(task, init, goalPos, deadline, !shortPlan), init, goalPos, goalNeg, best);
         }
         // the cheap steps first: where neither the lazy search nor the smallest neighbourhood helps,
         // the first plan is likely short already and the rest of the budget is kept
