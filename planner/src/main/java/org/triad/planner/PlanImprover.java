@@ -8,22 +8,25 @@ package org.triad.planner;
  * <ol>
  * <li>action elimination ({@link PlanShortener}) on the first plan;</li>
  * <li>when the first plan came from the goal agenda: LAMA's first iteration (lazy greedy search,
- *     FF and landmark count, preferred operators), which finds other plans where the agenda's
- *     goal order forces detours;</li>
+ *     FF with h^add supporters and the landmark count with disjunctive landmarks, preferred
+ *     operators), which finds other plans where the agenda's goal order forces detours;</li>
  * <li>plan neighbourhood graph search ({@link PlanNeighbourhoodSearch}) with the smallest
  *     neighbourhood; if neither this nor the lazy search shortened the plan, the first plan is
  *     likely short already and the rest of the budget is left unused;</li>
- * <li>otherwise growing neighbourhoods for half of the remaining work, then restarts of weighted A*
- *     (weights 5, 3, 2, preferred operators) that only look for plans shorter than the best so far,
- *     each result post-processed the same way, and neighbourhoods again with what is left.</li>
+ * <li>otherwise growing neighbourhoods for half of the remaining work where the smallest one
+ *     helped, then restarts on h^add supporters (greedy, then weighted A* with weights 5, 3, 2,
+ *     preferred operators) that only look for plans shorter than the best so far, until one finds
+ *     none, and neighbourhoods again with what is left where either helped.</li>
  * </ol>
  * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
  * extra work (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
  * to apply actions, so they follow whatever action semantics it implements.
  */
 final class PlanImprover {
-    /** Weighted A* restarts, as in LAMA's later iterations. */
-    static final int[] WEIGHTS = {5, 3, 2};
+    /** Restarts as {g weight, h weight}: greedy, then weighted A* as in LAMA's later iterations. */
+    static final int[][] RESTARTS = {{0, 1}, {1, 5}, {1, 3}, {1, 2}};
+    /** Plans at least this long get the lazy search on h^add supporters and disjunctive landmarks, shorter ones not. */
+    static final int ADDITIVE_LAZY_STEPS = 20;
     /** Largest plan neighbourhood explored (states) ... */
     static final int NEIGHBOURHOOD_STATES = 200_000;
     /** ... and at most this many facts stored in its states, a memory bound of about 64 MB. */
@@ -41,6 +44,8 @@ final class PlanImprover {
     private boolean shortest;
     private boolean timedOut;
     private PlanNeighbourhoodSearch neighbourhood;
+    private final java.util.function.Supplier<? extends FfHeuristic> additiveSource;
+    private FfHeuristic additive;
 
     /**
      * @param deadlineNanos {@link System#nanoTime()} when improving must stop (the timeout)
@@ -51,6 +56,13 @@ final class PlanImprover {
      */
     PlanImprover(SearchTask task, FfHeuristic heuristic, Successors successors, long deadlineNanos, long[] effort, long searchEvaluations,
                  long workBudget) {
+        this(task, heuristic, () -> new AdditiveFfHeuristic(task), successors, deadlineNanos, effort, searchEvaluations, workBudget);
+    }
+
+    /** @param additive the FF heuristic with h^add supporters, asked for when first needed (a solve's scratch one: made once per task) */
+    PlanImprover(SearchTask task, FfHeuristic heuristic, java.util.function.Supplier<? extends FfHeuristic> additive, Successors successors,
+                 long deadlineNanos, long[] effort, long searchEvaluations, long workBudget) {
+        this.additiveSource = additive;
         this.searchEvaluations = searchEvaluations;
         this.workBudget = workBudget;
         this.meter = new WorkMeter(heuristic, successors);
@@ -70,33 +82,45 @@ final class PlanImprover {
         if (best.length == 0) return best;
         int first = best.length;
         if (tryLazyGreedy && !expired()) {
-            Landmarks lms = new Landmarks(task, init, goalPos, deadline);
-            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).start(init, goalPos, goalNeg)
-                    .resume(meter, workUntil, searchEvaluations);
-            count(r);
-            if (r.outcome() == BestFirstSearch.Outcome.FOUND) {
-                best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
-            }
+            // LAMA's first iteration with h^add supporters (Fast Downward's FF): the better guide
+            // where achievers differ in what they need (elevators p22 110 steps, 120 with level
+            // supporters; tpp p25 217 against 231), rarely worse, and at half the evaluations
+            // (a short plan keeps the level supporters and simple landmarks: each evaluation and the
+            // landmarks cost less, and a robot's goal of a few steps, such as the hospital's FollowedTo,
+            // would pay a third more for nothing)
+            boolean shortPlan = best.length < ADDITIVE_LAZY_STEPS;
+            best = lazy(shortPlan ? heuristic : additive(), new Landmarks(task, init, goalPos, deadline, !shortPlan), init, goalPos, goalNeg, best);
         }
         // the cheap steps first: where neither the lazy search nor the smallest neighbourhood helps,
         // the first plan is likely short already and the rest of the budget is kept
+        int beforeHood = best.length;
         best = neighbourhood(init, goalPos, goalNeg, best, workUntil, false);
         if (shortest || best.length == first) return best;
-        // half of what is left, so that the restarts below get work when the neighbourhood stops helping
-        long now = meter.now();
-        best = neighbourhood(init, goalPos, goalNeg, best, now + Math.max(0, workUntil - now) / 2, true);
-        if (shortest) return best;
-        for (int w : WEIGHTS) {
-            if (shortest || expired() || best.length <= 1) break;
-            BestFirstSearch.Result r = new BestFirstSearch(task, heuristic, successors, deadline).boundLength(best.length)
-                    .limitWork(meter, workUntil).run(init, goalPos, goalNeg, 1, w, true, searchEvaluations);
-            count(r);
-            if (r.outcome() == BestFirstSearch.Outcome.FOUND) best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
-            // exhausted under the bound: no shorter plan exists for any weight (a limit says nothing)
-            if (r.outcome() == BestFirstSearch.Outcome.EXHAUSTED) break;
+        // larger neighbourhoods only where the smallest one helped (gripper: the lazy search's plan
+        // is as short as Fast Downward's, and growing the neighbourhood around it spent the whole
+        // budget for nothing), for half of what is left, so that the restarts get work too
+        boolean hoodHelps = best.length < beforeHood;
+        if (hoodHelps) {
+            long now = meter.now();
+            best = neighbourhood(init, goalPos, goalNeg, best, now + Math.max(0, workUntil - now) / 2, true);
+            if (shortest) return best;
         }
-        // restarts that stopped at their evaluation limit leave work to larger neighbourhoods
-        if (!shortest) best = neighbourhood(init, goalPos, goalNeg, best, workUntil, true);
+        // restarts on h^add supporters, greedy first (tpp p25: 209 steps where the lazy searches
+        // found 217), then weighted A* (elevators p22: 92 where greedy searches find 103-120)
+        boolean restartHelped = false;
+        for (int[] weights : RESTARTS) {
+            if (shortest || expired() || best.length <= 1) break;
+            BestFirstSearch.Result r = new BestFirstSearch(task, additive(), successors, deadline).boundLength(best.length)
+                    .limitWork(meter, workUntil).run(init, goalPos, goalNeg, weights[0], weights[1], true, searchEvaluations);
+            count(r);
+            // exhausted under the bound: no shorter plan exists for any weight; a restart that found
+            // nothing within its evaluations makes the next, less greedy, one unlikely to
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) break;
+            best = shorter(best, postProcess(init, goalPos, goalNeg, r.plan()));
+            restartHelped = true;
+        }
+        // what is left goes to larger neighbourhoods where they or the restarts found anything
+        if (!shortest && (hoodHelps || restartHelped)) best = neighbourhood(init, goalPos, goalNeg, best, workUntil, true);
         return best;
     }
 
@@ -105,8 +129,9 @@ final class PlanImprover {
         return timedOut;
     }
 
+    /** A restart's plan shortened, without growing neighbourhoods: they would take the budget from the next restart. */
     private int[] postProcess(int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
-        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), workUntil, true);
+        return neighbourhood(init, goalPos, goalNeg, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, plan), workUntil, false);
     }
 
     private int[] neighbourhood(int[] init, int[] goalPos, int[] goalNeg, int[] plan, long until, boolean grow) {
@@ -120,6 +145,23 @@ final class PlanImprover {
         // the neighbourhood was the whole reachable space: nothing shorter exists
         shortest |= neighbourhood.provedShortest();
         return plan;
+    }
+
+    private int[] lazy(FfHeuristic h, Landmarks lms, int[] init, int[] goalPos, int[] goalNeg, int[] best) {
+        BestFirstSearch.Result r = new LazyGreedySearch(h, lms, successors, deadline).start(init, goalPos, goalNeg)
+                .resume(meter, workUntil, searchEvaluations);
+        count(r);
+        if (r.outcome() != BestFirstSearch.Outcome.FOUND) return best;
+        return shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
+    }
+
+    /** The FF heuristic with h^add supporters, counted by the meter from the moment it is first used. */
+    private FfHeuristic additive() {
+        if (additive == null) {
+            additive = additiveSource.get();
+            meter.add(additive);
+        }
+        return additive;
     }
 
     private void count(BestFirstSearch.Result r) {

@@ -51,11 +51,17 @@ final class SearchTask {
         return gs;
     }
 
-    record Scratch(FfHeuristic heuristic, Successors successors) { }
+    /** The heuristics and successor generator one solve uses; the h^add one is made when first needed. */
+    record Scratch(FfHeuristic heuristic, Successors successors, AdditiveFfHeuristic[] additiveHolder) {
+        AdditiveFfHeuristic additive(SearchTask task) {
+            if (additiveHolder[0] == null) additiveHolder[0] = new AdditiveFfHeuristic(task);
+            return additiveHolder[0];
+        }
+    }
 
     Scratch takeScratch() {
         Scratch s = scratch.getAndSet(null);
-        return s != null ? s : new Scratch(new FfHeuristic(this), new Successors(this));
+        return s != null ? s : new Scratch(new FfHeuristic(this), new Successors(this), new AdditiveFfHeuristic[1]);
     }
 
     void returnScratch(Scratch s) {

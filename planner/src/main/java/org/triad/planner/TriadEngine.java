@@ -71,10 +71,10 @@ public final class TriadEngine implements PddlPlanner {
 
     /**
      * Default cap on the work spent making a first plan shorter ({@link PlanImprover}), in
-     * {@link WorkMeter} units: about 5 s of one core (the time cap it replaces was 10 s of wall
-     * time, which on a loaded machine bought less).
+     * {@link WorkMeter} units: about 10 s of one core, reached only by first plans of more than about
+     * 300 steps (the time cap it replaces was 10 s of wall time, which on a loaded machine bought less).
      */
-    public static final long IMPROVEMENT_CAP = 5 * WorkMeter.UNITS_PER_SECOND;
+    public static final long IMPROVEMENT_CAP = 10 * WorkMeter.UNITS_PER_SECOND;
     /**
      * Work granted to improving a plan of several goals, besides the work to the first plan:
      * enough for the lazy search and a few rounds of neighbourhood search on small tasks (about
@@ -106,6 +106,16 @@ public final class TriadEngine implements PddlPlanner {
      * spend on becoming cheaper (about 0.2 s), whatever the first plan cost.
      */
     static final long COST_MIN_WORK = WorkMeter.UNITS_PER_SECOND / 5;
+    /**
+     * Work granted to improving a first plan of several goals per square of its length
+     * ({@link WorkMeter} units): a longer plan needs more evaluations, each on a larger task, so a
+     * 60-step plan gets about 0.4 s worth more, 117 steps 1.4 s, 250 steps 6 s, within
+     * {@link #IMPROVEMENT_CAP} (elevators p22 117 steps to 93, p30 252 to 209, tpp p28 to 228; Fast
+     * Downward 96, 207, 238).
+     */
+    static final long IMPROVEMENT_WORK_PER_SQUARED_STEP = WorkMeter.UNITS_PER_SECOND / 10_000;
+    /** Evaluations each improving search may use per step of such a plan (elevators p22 needs 45). */
+    static final long IMPROVEMENT_EVALUATIONS_PER_STEP = 60;
 
     private final GroundedProblemCache cache;
     private final long improvementCap;
@@ -177,7 +187,7 @@ public final class TriadEngine implements PddlPlanner {
             SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
             SearchTask.Scratch scratch = task.takeScratch();
             try {
-                return search(q, task, scratch.heuristic(), scratch.successors(), groundMs, searchStart, deadline, minimizeCost);
+                return search(q, task, scratch, groundMs, searchStart, deadline, minimizeCost);
             } finally {
                 task.returnScratch(scratch);
             }
@@ -197,8 +207,10 @@ public final class TriadEngine implements PddlPlanner {
         return "out of memory in " + phase + ": the task needs more than the memory given (" + (Runtime.getRuntime().maxMemory() >> 20) + " MB)";
     }
 
-    private SolveResult search(GroundedProblem.Query q, SearchTask task, FfHeuristic h, Successors succ, double groundMs,
+    private SolveResult search(GroundedProblem.Query q, SearchTask task, SearchTask.Scratch scratch, double groundMs,
                               long searchStart, long deadline, boolean minimizeCost) {
+        FfHeuristic h = scratch.heuristic();
+        Successors succ = scratch.successors();
         BestFirstSearch search = new BestFirstSearch(task, h, succ, deadline);
         WorkMeter meter = new WorkMeter(h, succ);
         long workAtStart = meter.now();
@@ -283,10 +295,16 @@ public final class TriadEngine implements PddlPlanner {
         } else {
             long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
             // a single goal's A* plan is near shortest: no extra work, so small goals stay fast
-            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK;
-            long budget = Math.min(improvementCap, IMPROVEMENT_WORK_FACTOR * firstPlan + extra);
-            long evaluations = Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]);
-            PlanImprover improver = new PlanImprover(task, h, succ, deadline, effort, evaluations, budget);
+            // several goals: a little more; and where the goal agenda found the plan, more the longer
+            // it is (a cheap first plan of hundreds of steps, as the agenda finds for elevators or tpp,
+            // is where improving pays). A plan that was costly to find (the portfolio's) gets twice its
+            // work, at most half the cap, so that improving it does not double a long search (depot).
+            long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK
+                    + (fromAgenda ? IMPROVEMENT_WORK_PER_SQUARED_STEP * plan.length * plan.length : 0);
+            long budget = Math.min(improvementCap, Math.min(improvementCap / 2, IMPROVEMENT_WORK_FACTOR * firstPlan) + extra);
+            long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
+                    open.size() <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
+            PlanImprover improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
             plan = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
             bestSoFar = improver.timedOut();
         }

@@ -25,9 +25,15 @@ final class WorkMeter {
         this.successors = successors;
     }
 
-    /** Counts another heuristic's work too (one the caller made for another configuration). */
+    /** Work the heuristics added later had done before (a reused one counts only what it does from then on). */
+    private long before;
+
+    /** Counts another heuristic's work too (one the caller made for another configuration, or a reused one), from now on. */
     WorkMeter add(FfHeuristic heuristic) {
-        if (!heuristics.contains(heuristic)) heuristics.add(heuristic);
+        if (!heuristics.contains(heuristic)) {
+            heuristics.add(heuristic);
+            before += heuristic.work();
+        }
         return this;
     }
 
@@ -35,6 +41,6 @@ final class WorkMeter {
     long now() {
         long w = successors.work();
         for (FfHeuristic h : heuristics) w += h.work();
-        return w;
+        return w - before;
     }
 }

@@ -7,7 +7,7 @@ import org.triad.planner.pddl.Problem;
 
 /**
  * Timestamps and counters of the phases to a first plan, without a profiler:
- * {@code CoverageProbe PROBLEM SECONDS [lazy|lazyff|eager|trace PLAN_FILE]} (domain found as Fast
+ * {@code CoverageProbe PROBLEM SECONDS [lazy|lazyff|eager|waW:BOUND:EVALS|trace PLAN_FILE]} (domain found as Fast
  * Downward's driver finds it; {@code -Dadditive} uses {@link AdditiveFfHeuristic}). Prints parse,
  * grounding, relevance and landmark times and sizes, then one search's outcome, expansions,
  * evaluations and evaluations per second; {@code trace} prints h, the landmark count and whether
@@ -59,6 +59,11 @@ public final class CoverageProbe {
         BestFirstSearch.Result r;
         if (mode.equals("lazy")) {
             r = new LazyGreedySearch(h, lms, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
+        } else if (mode.startsWith("wa")) {
+            // waW:BOUND:EVALS weighted A* looking for plans shorter than BOUND
+            String[] m = mode.split(":");
+            r = new BestFirstSearch(task, h, succ, deadline).boundLength(Integer.parseInt(m[1]))
+                    .run(q.init(), q.goalPos(), q.goalNeg(), 1, Integer.parseInt(m[0].substring(2)), true, Long.parseLong(m[2]));
         } else if (mode.equals("lazyff")) {
             r = new LazyGreedySearch(h, null, succ, deadline).run(q.init(), q.goalPos(), q.goalNeg());
         } else {
