@@ -23,6 +23,10 @@ abstract class Activity {
 
     abstract void control(double dt);
 
+    /** The robot was paused for {@code seconds}: its timers move on by as much. */
+    void shift(double seconds) {
+    }
+
     /** The person being guided or followed, if any. */
     Agent partner() {
         return null;

@@ -44,6 +44,8 @@ public final class Simulation {
     private int blockings;
     private boolean stepping;
     private final List<Runnable> stepListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final ContactWatch contacts = new ContactWatch();
+    private volatile SimulationClock clock;
 
     private record Scheduled(double time, long seq, String label, Runnable action) implements Comparable<Scheduled> {
         @Override
@@ -425,8 +427,16 @@ public final class Simulation {
 
     // ---- time ------------------------------------------------------------------------------------
 
-    /** Advances virtual time by one step: due events, doors, agent controllers, physics, trace. */
+    /**
+     * Advances virtual time by one step: due events, doors, agent controllers, physics, contacts, trace.
+     *
+     * @throws IllegalStateException when a {@link SimulationClock} steps this simulation and the caller is not it
+     */
     public void step() {
+        SimulationClock owner = clock;
+        if (owner != null && !owner.isClockThread()) {
+            throw new IllegalStateException("this simulation is stepped by its clock; command it through SimulationClock.call/submit");
+        }
         requireNotStepping();
         stepping = true;
         try {
@@ -444,6 +454,9 @@ public final class Simulation {
             steps++;
             for (Agent a : agents) {
                 a.afterStep();
+            }
+            for (Contact c : contacts.check(robots, time())) {
+                record(new TraceEvent(c.time(), "world", "contact " + c.first() + " " + c.second(), c.position(), true, ""));
             }
             if (recordTrace) {
                 recordFrame();
@@ -463,6 +476,38 @@ public final class Simulation {
      */
     public void addStepListener(Runnable listener) {
         stepListeners.add(Checks.notNull("listener", listener));
+    }
+
+    /**
+     * Calls {@code listener} on the stepping thread whenever two robots come into contact (their discs touch, within
+     * {@value ContactWatch#TOUCH} m); a pair is reported again only after it has been apart by
+     * {@value ContactWatch#APART} m. The listener may read the simulation but must not step it.
+     */
+    public void onContact(java.util.function.Consumer<Contact> listener) {
+        contacts.listen(Checks.notNull("listener", listener));
+    }
+
+    /** Robot-robot contacts so far, in order. */
+    public List<Contact> contacts() {
+        return contacts.all();
+    }
+
+    /** The clock that steps this simulation, if one was started ({@link SimulationClock#start}). */
+    public java.util.Optional<SimulationClock> clock() {
+        return java.util.Optional.ofNullable(clock);
+    }
+
+    void attach(SimulationClock c) {
+        if (clock != null) {
+            throw new IllegalStateException("this simulation already has a clock");
+        }
+        clock = c;
+    }
+
+    /** Runs {@code body} under the clock's lock if a clock steps this simulation (from any thread), else directly. */
+    <T> T locked(java.util.function.Supplier<T> body) {
+        SimulationClock c = clock;
+        return c == null ? body.get() : c.call(s -> body.get());
     }
 
     /** Advances virtual time by {@code seconds} (rounded up to whole steps). */
