@@ -37,6 +37,11 @@ final class HandlingActivity extends Activity {
     }
 
     @Override
+    boolean drives() {
+        return false;
+    }
+
+    @Override
     void shift(double seconds) {
         end += seconds;
     }

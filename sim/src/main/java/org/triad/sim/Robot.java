@@ -35,6 +35,8 @@ public final class Robot extends Agent {
     private Activity activity;
     private PendingAction pending;
     private boolean paused;
+    private Battery battery = Battery.defaults();
+    private Vec2 lastPosition;
     private double heading;
     private Vec2 intendedDirection = Vec2.ZERO;
 
@@ -98,6 +100,20 @@ public final class Robot extends Agent {
 
     public boolean isPaused() {
         return paused;
+    }
+
+    /** The robot's battery ({@link Battery#defaults()} unless set). */
+    public Battery battery() {
+        return battery;
+    }
+
+    /** Gives the robot another battery (e.g. a nearly empty one, to test what an empty battery does). */
+    public void setBattery(Battery b) {
+        Checks.notNull("battery", b);
+        sim.locked(() -> {
+            battery = b;
+            return null;
+        });
     }
 
     /** Forgets seen-closed doors, so the next route may try them again. */
@@ -412,6 +428,10 @@ public final class Robot extends Agent {
             body.setLinearVelocity(0, 0);
             return;
         }
+        if (activity != null && activity.result == null && battery.isEmpty() && activity.drives()) {
+            activity.fail(Failure.BATTERY_EMPTY, String.format(Locale.ROOT, "battery empty (%.0f J/m over %.0f J) at %s",
+                    battery.joulesPerMetre(), battery.capacityJoules(), p));
+        }
         if (activity != null && activity.result == null) {
             activity.control(dt);
         } else {
@@ -437,6 +457,12 @@ public final class Robot extends Agent {
     @Override
     void afterStep() {
         super.afterStep();
+        Vec2 now = position();
+        if (lastPosition != null) {
+            battery.drive(now.distance(lastPosition));
+        }
+        lastPosition = now;
+        battery.dock(velocity().length() < 0.05 && sim.atDock(now), sim.stepSeconds());
         if (activity != null && activity.result != null) {
             finishActivity();
         }

@@ -46,6 +46,9 @@ public final class Simulation {
     private final List<Runnable> stepListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
     private final ContactWatch contacts = new ContactWatch();
     private volatile SimulationClock clock;
+    private final Map<String, Vec2> docks = new LinkedHashMap<>();
+    /** Distance, metres, from a dock's position within which a robot standing still charges. */
+    public static final double DOCK_RANGE = 0.5;
 
     private record Scheduled(double time, long seq, String label, Runnable action) implements Comparable<Scheduled> {
         @Override
@@ -167,6 +170,38 @@ public final class Simulation {
         trace.addPerson(name);
         refreshAgents();
         return p;
+    }
+
+    /**
+     * Adds a charging dock at a position (metres): a robot standing still within {@value #DOCK_RANGE} m of it
+     * charges its {@link Battery}.
+     *
+     * @throws IllegalArgumentException for a duplicate name or a position outside every room
+     */
+    public void addDock(String name, Vec2 position) {
+        Checks.name("dock name", name);
+        Checks.notNull("position", position);
+        if (docks.containsKey(name)) {
+            throw new IllegalArgumentException("duplicate dock '" + name + "'");
+        }
+        if (plan.roomAt(position).isEmpty()) {
+            throw new IllegalArgumentException("dock '" + name + "' at " + position + " is outside every room");
+        }
+        docks.put(name, position);
+    }
+
+    /** Docks by name, in the order added. */
+    public Map<String, Vec2> docks() {
+        return Collections.unmodifiableMap(docks);
+    }
+
+    boolean atDock(Vec2 p) {
+        for (Vec2 d : docks.values()) {
+            if (d.distance(p) <= DOCK_RANGE) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Adds an item at a position (metres) inside a room. */

@@ -21,13 +21,16 @@ import org.triad.sim.Vec2;
  * The simulated hospital as one building: one dyn4j simulation of the models' floor with its people and items and
  * many couriers, each with its own {@code IRobot}/{@code IWorld} implementation ({@link Courier}) over the shared
  * world. An item one courier picked up is gone for the others; couriers meet in the corridors and block each
- * other. The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
+ * other. Each courier has a {@link org.triad.sim.Battery} (the simulation's defaults: 50 J per metre driven, 360 kJ
+ * full) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
  * along the walls of the lobby, then of ward 3, ward 2, storage, x-ray and ward 1 (20 spots a room).
  *
  * <p>Script the building ({@code sim().at(40).closeDoor(...)}) before {@link #start(double)}; afterwards the clock
  * steps it and everything goes through {@link SimulationClock#call} or the couriers' blocking actions.
  */
 public final class HospitalBuilding {
+    /** The charging dock, at the lobby's waypoint: a courier standing still there charges its battery. */
+    public static final String DOCK = "lobby";
     /** Rooms whose walls the couriers park along, in order of filling. */
     static final List<String> PARKING = List.of("lobby", "ward3", "ward2", "storage", "xray", "ward1");
 
@@ -55,6 +58,7 @@ public final class HospitalBuilding {
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
+        sim.addDock(DOCK, floor.plan().waypoint(DOCK).position());
         Whereabouts whereabouts = new Whereabouts(floor);
         List<Vec2> spots = parkingSpots();
         int spot = 0;

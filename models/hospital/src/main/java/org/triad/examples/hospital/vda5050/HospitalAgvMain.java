@@ -10,6 +10,8 @@ import java.util.concurrent.CountDownLatch;
 
 import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.sim.Battery;
+import org.triad.vda5050.devices.DeviceLink;
 import org.triad.sim.SimulationClock;
 import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
@@ -23,7 +25,7 @@ import org.triad.vda5050.mqtt.BrokerUnreachableException;
  *
  * <pre>
  * java ... HospitalAgvMain --broker tcp://127.0.0.1:1883 [--serial courier-1 | --count N] [--speed 10|max] [--seed 42]
- *                          [--out DIR] [--close-fire-door-at SECONDS]
+ *                          [--out DIR] [--close-fire-door-at SECONDS] [--battery PERCENT]
  * </pre>
  *
  * On a clean stop it prints how fast the building ran: {@code building: 600.0 s simulated in 60.0 s (10.00x real
@@ -37,9 +39,17 @@ public final class HospitalAgvMain {
      * @param speed            virtual seconds per wall-clock second ({@code Double.POSITIVE_INFINITY}: as fast as the machine allows)
      * @param out              where each AGV draws its picture, or null
      * @param closeFireDoorAt  virtual time at which the fire door closes in every AGV's hospital, or null
+     * @param battery          every courier's initial battery charge, percent
      */
-    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
+    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery) {
+        public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
+            this(broker, serials, seed, speed, out, closeFireDoorAt, 100);
+        }
+
         public Options {
+            if (!(battery >= 0 && battery <= 100)) {
+                throw new IllegalArgumentException("--battery takes a charge in percent 0..100, not " + battery);
+            }
             if (broker == null) {
                 throw new IllegalArgumentException("--broker tcp://HOST:PORT is required");
             }
@@ -99,6 +109,7 @@ public final class HospitalAgvMain {
         double speed = 10;
         Path out = null;
         Double door = null;
+        double battery = 100;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (i + 1 >= args.length) {
@@ -114,6 +125,7 @@ public final class HospitalAgvMain {
                     case "--speed" -> speed = v.equals("max") ? Double.POSITIVE_INFINITY : Double.parseDouble(v);
                     case "--out" -> out = Path.of(v);
                     case "--close-fire-door-at" -> door = Double.parseDouble(v);
+                    case "--battery" -> battery = Double.parseDouble(v);
                     default -> throw new IllegalArgumentException("unknown option " + a);
                 }
             } catch (NumberFormatException e) {
@@ -124,7 +136,7 @@ public final class HospitalAgvMain {
             throw new IllegalArgumentException("give --serial S or --count N (serials courier-1..N), not both");
         }
         List<String> serials = count != null ? Options.numbered("courier", count) : List.of(serial == null ? "courier-1" : serial);
-        return new Options(broker, serials, seed, speed, out, door);
+        return new Options(broker, serials, seed, speed, out, door, battery);
     }
 
     /** Starts the building and its AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
@@ -143,6 +155,10 @@ public final class HospitalAgvMain {
         } catch (java.io.IOException e) {
             err.println("triad robot: cannot create " + o.out() + ": " + e.getMessage());
             return 2;
+        }
+        for (HospitalBuilding.Courier c : building.couriers()) {
+            Battery b = c.robot().battery();
+            c.robot().setBattery(new Battery(b.capacityJoules(), b.joulesPerMetre(), b.chargingWatts(), o.battery() / 100));
         }
         if (o.closeFireDoorAt() != null) {
             building.sim().at(o.closeFireDoorAt()).closeDoor(HospitalFloor.FIRE_DOOR);
@@ -165,10 +181,30 @@ public final class HospitalAgvMain {
             building.stop();
             return 2;
         }
+        DeviceLink devices = null;
+        if (o.broker().startsWith("tcp://")) {
+            try {
+                devices = DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line));
+                BuildingDoors.serve(building, devices);
+                out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
+                        + " answer requests on triad/devices/v1/doors/<name>/request");
+            } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
+                err.println("triad robot: " + e.getMessage());
+                agvs.forEach(SimulatedAgv::close);
+                building.stop();
+                return 2;
+            }
+        } else {
+            out.println("devices: not served on a secured broker yet (the device protocol runs on plain tcp:// brokers)");
+        }
+        DeviceLink deviceLink = devices;
         out.printf(Locale.ROOT, "building: one hospital, %d robot(s), one clock (%s)%n", agvs.size(), pace);
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             agvs.forEach(SimulatedAgv::close);
+            if (deviceLink != null) {
+                deviceLink.close();
+            }
             double simulated = clock.simulation().time();
             double ratio = clock.achievedSpeed();
             building.stop();

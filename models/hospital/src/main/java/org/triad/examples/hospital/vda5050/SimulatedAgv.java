@@ -569,7 +569,7 @@ public final class SimulatedAgv implements AutoCloseable {
         List<Load> loads = robot.carried().stream().map(i -> new Load(i.name(), "item", null)).toList();
         return new AgvState(headerIds.next(Topic.STATE), HeaderIds.now(), Header.VERSION, MasterControl.TRIAD, serial, orderId,
                 orderUpdateId, null, lastNodeId, lastNodeSequenceId, nodeStates, edgeStates, position(), velocity(), loads, driving, robot.isPaused(),
-                null, null, List.copyOf(actionStates.values()), new BatteryState(100, false), "AUTOMATIC", List.copyOf(errors), information(),
+                null, null, List.copyOf(actionStates.values()), new BatteryState(robot.battery().percent(), robot.battery().isCharging()), "AUTOMATIC", List.copyOf(errors), information(),
                 new SafetyState("NONE", false));
     }
 
