@@ -539,10 +539,13 @@ public final class Simulation {
         clock = c;
     }
 
-    /** Runs {@code body} under the clock's lock if a clock steps this simulation (from any thread), else directly. */
+    /**
+     * Runs {@code body} under the clock's lock if a clock steps this simulation and the caller is another thread, else
+     * directly (the clock's own thread holds the lock already; a blocking activity there fails in its await).
+     */
     <T> T locked(java.util.function.Supplier<T> body) {
         SimulationClock c = clock;
-        return c == null ? body.get() : c.call(s -> body.get());
+        return c == null || c.isClockThread() ? body.get() : c.call(s -> body.get());
     }
 
     /** Advances virtual time by {@code seconds} (rounded up to whole steps). */

@@ -127,7 +127,10 @@ public final class SimulationClock implements AutoCloseable {
         });
     }
 
-    /** Queues {@code c} to run on the clock thread before its next step; returns at once. */
+    /**
+     * Queues {@code c} to run on the clock thread before its next step; returns at once. It must not block (a blocking
+     * robot activity there throws); an exception it throws is printed and the clock goes on.
+     */
     public void submit(Consumer<Simulation> c) {
         commands.add(Checks.notNull("command", c));
     }
@@ -204,7 +207,13 @@ public final class SimulationClock implements AutoCloseable {
                 try {
                     Consumer<Simulation> c;
                     while ((c = commands.poll()) != null) {
-                        c.accept(sim);
+                        try {
+                            c.accept(sim);
+                        } catch (RuntimeException e) {
+                            // a bad command is its sender's fault: the building goes on
+                            System.err.println("simulation clock: a queued command failed at " + String.format(Locale.ROOT, "%.2f s", sim.time())
+                                    + ": " + e);
+                        }
                     }
                     sim.step();
                 } finally {

@@ -39,9 +39,11 @@ class SharedClockTest {
             boolean arrived = clock.call(s -> s.robot("a").isAt("corridorEast", 0.3));
             assertTrue(arrived);
             assertTrue(t >= e.endTime());
+            clock.submit(s -> s.robot("nobody")); // a bad command: printed, the clock goes on
             CompletableFuture<Boolean> queued = new CompletableFuture<>();
             clock.submit(s -> queued.complete(s.robots().size() == 2));
             assertTrue(queued.get(60, TimeUnit.SECONDS), "a queued command runs on the clock thread");
+            assertTrue(clock.isRunning());
         }
     }
 

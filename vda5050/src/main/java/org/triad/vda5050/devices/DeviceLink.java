@@ -48,6 +48,7 @@ public final class DeviceLink implements AutoCloseable {
         }
         try {
             MqttClient c = new MqttClient(broker, clientId, new MemoryPersistence());
+            c.setTimeToWait(2000);
             DeviceLink link = new DeviceLink(c, problems);
             c.setCallback(link.new Callback());
             MqttConnectOptions o = new MqttConnectOptions();
@@ -81,12 +82,16 @@ public final class DeviceLink implements AutoCloseable {
         }
     }
 
-    /** Publishes a message as JSON (QoS 1). */
+    /**
+     * Publishes a message as JSON (QoS 1), waiting at most 2 s for the broker. A message that cannot be sent (no
+     * broker) is reported as one line, not thrown: a device's state is published again at its next change, and a
+     * client whose request got lost says so after its timeout.
+     */
     public void publish(String topic, Object message, boolean retained) {
         try {
             client.publish(topic, VdaJson.write(message), 1, retained);
         } catch (MqttException e) {
-            throw new IllegalStateException("cannot publish to " + topic + ": " + e.getMessage(), e);
+            problems.accept("devices: could not publish to " + topic + ": " + e.getMessage());
         }
     }
 
