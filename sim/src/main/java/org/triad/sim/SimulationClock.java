@@ -29,7 +29,13 @@ public final class SimulationClock implements AutoCloseable {
     /** Speed that steps without pausing. */
     public static final double AS_FAST_AS_POSSIBLE = Double.POSITIVE_INFINITY;
     /** Wall-clock nanoseconds a waiting thread sleeps before it runs its {@link #whileWaiting(Runnable) hook}. */
-    private static final long WAIT_SLICE_NANOS = 20_000_000L;
+    private static final long WAIT_SLICE_NANOS = 50_000_000L;
+    /** Steps the clock takes at most per turn of its lock when it is behind. */
+    private static final int MAX_STEPS_PER_TURN = 8;
+    /** How far ahead of the wall clock virtual time may run before the clock sleeps. */
+    private static final long SLEEP_NANOS = 3_000_000L;
+    /** How far behind the clock catches up before it gives the lag up. */
+    private static final long MAX_LAG_NANOS = 10_000_000_000L;
 
     private final Simulation sim;
     private final double speed;
@@ -137,7 +143,7 @@ public final class SimulationClock implements AutoCloseable {
 
     /**
      * Sets what the calling thread does while one of its blocking robot activities waits for the clock: run
-     * about every 20 ms of wall-clock time, under the lock (so it may read and command the simulation, but not
+     * about every 50 ms of wall-clock time, under the lock (so it may read and command the simulation, but not
      * start another blocking activity of the same robot). Null removes it. A VDA 5050 AGV handles the messages
      * that arrive while it drives there.
      */
@@ -215,7 +221,12 @@ public final class SimulationClock implements AutoCloseable {
                                     + ": " + e);
                         }
                     }
-                    sim.step();
+                    // behind the wall clock, catch up a few steps per turn of the lock: on a loaded machine every
+                    // hand-over of the lock costs a trip through the scheduler
+                    int n = 0;
+                    do {
+                        sim.step();
+                    } while (++n < MAX_STEPS_PER_TURN && behind());
                 } finally {
                     lock.unlock();
                 }
@@ -235,7 +246,16 @@ public final class SimulationClock implements AutoCloseable {
         }
     }
 
-    /** Sleeps until the wall clock catches up with virtual time; never tries to catch up more than 0.5 s of lag. */
+    private boolean behind() {
+        return !Double.isInfinite(speed) && System.nanoTime() > paceWall + (long) ((sim.time() - paceSim) / speed * 1e9);
+    }
+
+    /**
+     * Sleeps while virtual time is ahead of {@code speed} x the wall clock by more than {@value #SLEEP_NANOS} ns (sleeping
+     * after every 1.7 ms step would pay the scheduler's overshoot every time); steps without sleeping while behind, to
+     * catch up; behind by more than {@value #MAX_LAG_NANOS} ns (a machine that cannot keep up), re-paces from now
+     * rather than racing.
+     */
     private void pace() {
         if (Double.isInfinite(speed)) {
             if ((++stepsSinceYield & 63) == 0) {
@@ -245,14 +265,13 @@ public final class SimulationClock implements AutoCloseable {
         }
         long due = paceWall + (long) ((sim.time() - paceSim) / speed * 1e9);
         long now = System.nanoTime();
-        if (due - now > 0) {
+        if (due - now > SLEEP_NANOS) {
             try {
                 TimeUnit.NANOSECONDS.sleep(due - now);
             } catch (InterruptedException e) {
                 running = false;
             }
-        } else if (now - due > 500_000_000L) {
-            // the machine cannot keep up: pace from here rather than racing to catch up
+        } else if (now - due > MAX_LAG_NANOS) {
             paceWall = now;
             paceSim = sim.time();
         }

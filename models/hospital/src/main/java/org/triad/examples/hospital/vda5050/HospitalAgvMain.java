@@ -141,7 +141,7 @@ public final class HospitalAgvMain {
 
     /** Starts the building and its AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
     public static int serve(Options o, PrintStream out, PrintStream err) {
-        List<SimulatedAgv> agvs = new ArrayList<>();
+        List<SimulatedAgv> agvs = new java.util.concurrent.CopyOnWriteArrayList<>();
         HospitalBuilding building;
         try {
             if (o.out() != null) {
@@ -166,6 +166,25 @@ public final class HospitalAgvMain {
         building.onContact(c -> out.println(c));
         long cpuStart = cpuNanos();
         SimulationClock clock = building.start(o.speed());
+        java.util.concurrent.atomic.AtomicReference<DeviceLink> deviceLink = new java.util.concurrent.atomic.AtomicReference<>();
+        CountDownLatch stopped = new CountDownLatch(1);
+        // registered before the first AGV connects: stopped at any moment from now on, every AGV reports OFFLINE
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            agvs.forEach(SimulatedAgv::close);
+            DeviceLink d = deviceLink.getAndSet(null);
+            if (d != null) {
+                d.close();
+            }
+            double simulated = clock.simulation().time();
+            double ratio = clock.achievedSpeed();
+            building.stop();
+            out.printf(Locale.ROOT, "building: %.1f s simulated in %.1f s (%.2fx real time), CPU %.1f s%n", simulated,
+                    ratio > 0 ? simulated / ratio : 0, ratio, (cpuNanos() - cpuStart) / 1e9);
+            if (o.out() != null) {
+                out.println("pictures written to " + o.out().toAbsolutePath().normalize());
+            }
+            stopped.countDown();
+        }, "agv-shutdown"));
         String pace = Double.isInfinite(o.speed()) ? "as fast as possible" : String.format(Locale.ROOT, "%.0fx real time", o.speed());
         try {
             for (String serial : o.serials()) {
@@ -178,43 +197,31 @@ public final class HospitalAgvMain {
         } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
             err.println("triad robot: " + e.getMessage());
             agvs.forEach(SimulatedAgv::close);
+            agvs.clear();
             building.stop();
             return 2;
         }
-        DeviceLink devices = null;
         if (o.broker().startsWith("tcp://")) {
             try {
-                devices = DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line));
-                BuildingDoors.serve(building, devices);
+                deviceLink.set(DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line)));
+                BuildingDoors.serve(building, deviceLink.get());
                 out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
                         + " answer requests on triad/devices/v1/doors/<name>/request");
             } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
                 err.println("triad robot: " + e.getMessage());
                 agvs.forEach(SimulatedAgv::close);
+                agvs.clear();
+                DeviceLink d = deviceLink.getAndSet(null);
+                if (d != null) {
+                    d.close();
+                }
                 building.stop();
                 return 2;
             }
         } else {
             out.println("devices: not served on a secured broker yet (the device protocol runs on plain tcp:// brokers)");
         }
-        DeviceLink deviceLink = devices;
         out.printf(Locale.ROOT, "building: one hospital, %d robot(s), one clock (%s)%n", agvs.size(), pace);
-        CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            agvs.forEach(SimulatedAgv::close);
-            if (deviceLink != null) {
-                deviceLink.close();
-            }
-            double simulated = clock.simulation().time();
-            double ratio = clock.achievedSpeed();
-            building.stop();
-            out.printf(Locale.ROOT, "building: %.1f s simulated in %.1f s (%.2fx real time), CPU %.1f s%n", simulated,
-                    ratio > 0 ? simulated / ratio : 0, ratio, (cpuNanos() - cpuStart) / 1e9);
-            if (o.out() != null) {
-                out.println("pictures written to " + o.out().toAbsolutePath().normalize());
-            }
-            stopped.countDown();
-        }, "agv-shutdown"));
         try {
             stopped.await();
         } catch (InterruptedException e) {

@@ -90,6 +90,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private final HeaderIds headerIds = new HeaderIds();
     private final LinkedBlockingQueue<Received> inbox = new LinkedBlockingQueue<>();
     private final Thread thread;
+    private final java.util.concurrent.ExecutorService sender;
     private volatile boolean running = true;
     private MqttLink link;
 
@@ -126,14 +127,14 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     /**
-     * The courier {@code serial} of a shared building as an AGV; the building's clock must be started (by its owner)
-     * for the AGV to drive.
+     * The courier {@code serial} of a shared building as an AGV; it reports state and drives once the building's owner
+     * has started the clock.
      *
      * @param pictures a folder to draw {@code <serial>.png} (the whole building) into after every order, or null
      * @throws IllegalArgumentException if the building has no courier {@code serial}
      */
     public SimulatedAgv(String broker, HospitalBuilding building, String serial, Path pictures, Consumer<String> log) {
-        this(broker, building, serial, building.clock().map(SimulationClock::speed).orElse(1.0), false, pictures, log);
+        this(broker, building, serial, 1, false, pictures, log);
     }
 
     private SimulatedAgv(String broker, HospitalBuilding building, String serial, double speed, boolean ownsBuilding, Path pictures,
@@ -156,6 +157,11 @@ public final class SimulatedAgv implements AutoCloseable {
         this.robot = courier.robot();
         this.lastNodeId = floor.waypointAt(robot.position());
         this.thread = new Thread(this::loop, "agv-" + serial);
+        this.sender = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "agv-" + serial + "-send");
+            t.setDaemon(true);
+            return t;
+        });
     }
 
     /**
@@ -205,10 +211,28 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     private void announce() {
-        link.publish(topic(Topic.CONNECTION), new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
+        send(Topic.CONNECTION, new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
                 MasterControl.TRIAD, serial, ConnectionState.ONLINE), true);
-        link.publish(topic(Topic.FACTSHEET), HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
+        send(Topic.FACTSHEET, HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
         lastStateNanos = 0;
+    }
+
+    /**
+     * Publishes in order on the AGV's sender thread: building a message needs the clock's lock (it reads the
+     * simulation), sending it (schema check, MQTT) does not, and must not hold up the building's other robots.
+     */
+    private void send(Topic t, Object message, boolean retained) {
+        try {
+            sender.execute(() -> {
+                try {
+                    link.publish(topic(t), message, retained);
+                } catch (RuntimeException e) {
+                    log.accept("agv " + serial + ": " + e.getMessage());
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException closed) {
+            // closing: nothing more goes out after OFFLINE
+        }
     }
 
     private String topic(Topic t) {
@@ -218,18 +242,23 @@ public final class SimulatedAgv implements AutoCloseable {
     // ---- the AGV thread ------------------------------------------------------------------------
 
     private void loop() {
+        // the owner of a shared building may start its clock after starting its AGVs
         SimulationClock clock;
-        try {
-            clock = hospital.clock().orElseThrow(() -> new IllegalStateException("the building's clock has not been started"));
-        } catch (IllegalStateException e) {
-            log.accept("agv " + serial + ": " + e.getMessage());
-            return;
+        while ((clock = hospital.clock().orElse(null)) == null) {
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                return;
+            }
         }
         clock.whileWaiting(this::whileDriving);
         clock.run(s -> publishState());
         while (running) {
             try {
                 Received r = inbox.poll(100, TimeUnit.MILLISECONDS);
+                if (r == null && pendingEdges.isEmpty() && pendingNodes.isEmpty() && !stateDue()) {
+                    continue; // nothing to do: leave the clock's lock to those who have
+                }
                 clock.run(s -> {
                     if (r != null) {
                         handle(r, false);
@@ -514,7 +543,7 @@ public final class SimulatedAgv implements AutoCloseable {
                 setStatus(a, ActionStatus.FINISHED, null);
             }
             case "factsheetRequest" -> {
-                link.publish(topic(Topic.FACTSHEET), HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
+                send(Topic.FACTSHEET, HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
                 setStatus(a, ActionStatus.FINISHED, null);
             }
             case "stateRequest" -> setStatus(a, ActionStatus.FINISHED, null);
@@ -526,7 +555,7 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     /**
-     * Runs while this AGV's robot drives (its thread waits for the clock; under the clock's lock, about every 20 ms):
+     * Runs while this AGV's robot drives (its thread waits for the clock; under the clock's lock, about every 50 ms):
      * handles the messages that arrive meanwhile (order updates, cancel, pause) and publishes state and
      * visualization when due.
      */
@@ -542,8 +571,12 @@ public final class SimulatedAgv implements AutoCloseable {
         visualizationIfDue();
     }
 
+    private boolean stateDue() {
+        return System.nanoTime() - lastStateNanos >= 1_000_000_000L;
+    }
+
     private void stateIfDue() {
-        if (System.nanoTime() - lastStateNanos >= 1_000_000_000L) {
+        if (stateDue()) {
             publishState();
         }
     }
@@ -551,7 +584,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private void visualizationIfDue() {
         if (System.nanoTime() - lastVisualizationNanos >= 250_000_000L) {
             lastVisualizationNanos = System.nanoTime();
-            link.publish(topic(Topic.VISUALIZATION), new Visualization(headerIds.next(Topic.VISUALIZATION), HeaderIds.now(), Header.VERSION,
+            send(Topic.VISUALIZATION, new Visualization(headerIds.next(Topic.VISUALIZATION), HeaderIds.now(), Header.VERSION,
                     MasterControl.TRIAD, serial, position(), velocity()), false);
         }
     }
@@ -559,7 +592,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private void publishState() {
         lastStateNanos = System.nanoTime();
         statesSent++;
-        link.publish(topic(Topic.STATE), state(), false);
+        send(Topic.STATE, state(), false);
     }
 
     AgvState state() {
@@ -658,8 +691,16 @@ public final class SimulatedAgv implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         if (link != null) {
-            link.publish(topic(Topic.CONNECTION), new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
+            send(Topic.CONNECTION, new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
                     MasterControl.TRIAD, serial, ConnectionState.OFFLINE), true);
+        }
+        sender.shutdown();
+        try {
+            sender.awaitTermination(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (link != null) {
             link.close();
         }
         if (ownsBuilding) {
