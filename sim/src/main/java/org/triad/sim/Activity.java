@@ -23,6 +23,15 @@ abstract class Activity {
 
     abstract void control(double dt);
 
+    /** Whether the activity drives the robot (an empty battery stops it). */
+    boolean drives() {
+        return true;
+    }
+
+    /** The robot was paused for {@code seconds}: its timers move on by as much. */
+    void shift(double seconds) {
+    }
+
     /** The person being guided or followed, if any. */
     Agent partner() {
         return null;

@@ -21,5 +21,7 @@ public enum Failure {
     /** The robot already carries as many items as it can. */
     CAPACITY_EXCEEDED,
     /** The person to guide or follow fell too far behind or disappeared. */
-    PERSON_LOST
+    PERSON_LOST,
+    /** The robot's battery is empty: it cannot drive (see {@link Battery}). */
+    BATTERY_EMPTY
 }

@@ -8,7 +8,7 @@ final class FollowActivity extends Activity {
     private final TrailFollower follower;
     private final double min;
     private final double max;
-    private final double deadline;
+    private double deadline;
     private double farSince = -1;
 
     FollowActivity(Robot robot, Person person, double min, double max, double timeout) {
@@ -23,6 +23,12 @@ final class FollowActivity extends Activity {
     @Override
     Agent partner() {
         return person;
+    }
+
+    @Override
+    void shift(double seconds) {
+        deadline += seconds;
+        farSince = farSince < 0 ? farSince : farSince + seconds;
     }
 
     @Override

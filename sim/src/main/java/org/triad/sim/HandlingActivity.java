@@ -13,7 +13,7 @@ final class HandlingActivity extends Activity {
 
     private final Supplier<Problem> check;
     private final Supplier<String> effect;
-    private final double end;
+    private double end;
 
     HandlingActivity(Robot robot, String action, Supplier<Problem> check, Supplier<String> effect) {
         this(robot, action, robot.spec().handlingSeconds(), check, effect);
@@ -34,6 +34,16 @@ final class HandlingActivity extends Activity {
             return true;
         }
         return false;
+    }
+
+    @Override
+    boolean drives() {
+        return false;
+    }
+
+    @Override
+    void shift(double seconds) {
+        end += seconds;
     }
 
     @Override

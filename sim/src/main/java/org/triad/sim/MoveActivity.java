@@ -11,7 +11,7 @@ final class MoveActivity extends Activity {
     private final PathFollower follower;
     private final String goal;
     private final Person guided;
-    private final double deadline;
+    private double deadline;
     private double bestRemaining;
     private double lastProgress;
     private double doorWaitStart = -1;
@@ -27,6 +27,14 @@ final class MoveActivity extends Activity {
                 + robot.spec().doorWaitSeconds() + 30;
         this.bestRemaining = length;
         this.lastProgress = start;
+    }
+
+    @Override
+    void shift(double seconds) {
+        deadline += seconds;
+        lastProgress += seconds;
+        doorWaitStart = doorWaitStart < 0 ? doorWaitStart : doorWaitStart + seconds;
+        farSince = farSince < 0 ? farSince : farSince + seconds;
     }
 
     @Override

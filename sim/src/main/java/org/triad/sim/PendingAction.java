@@ -24,11 +24,16 @@ public final class PendingAction {
     }
 
     /**
-     * Steps the simulation until the activity is done (other robots' activities progress meanwhile).
+     * Steps the simulation until the activity is done (other robots' activities progress meanwhile); when a
+     * {@link SimulationClock} steps the simulation, waits for it instead.
      *
      * @throws IllegalStateException when called from inside a step (e.g. from a scripted event)
      */
     public ActionResult await() {
+        java.util.Optional<SimulationClock> clock = sim.clock();
+        if (clock.isPresent()) {
+            return clock.get().await(this);
+        }
         sim.requireNotStepping();
         while (result == null) {
             sim.step();
@@ -38,5 +43,6 @@ public final class PendingAction {
 
     void complete(ActionResult r) {
         result = r;
+        sim.clock().ifPresent(SimulationClock::activityEnded);
     }
 }

@@ -34,6 +34,9 @@ public final class Robot extends Agent {
     private final Set<String> knownClosedDoors = new TreeSet<>();
     private Activity activity;
     private PendingAction pending;
+    private boolean paused;
+    private Battery battery = Battery.defaults();
+    private Vec2 lastPosition;
     private double heading;
     private Vec2 intendedDirection = Vec2.ZERO;
 
@@ -81,6 +84,38 @@ public final class Robot extends Agent {
         knownClosedDoors.add(door);
     }
 
+    /**
+     * Pauses (true) or resumes the robot: while paused it stands still and its activity's clocks (timeouts,
+     * blocked and door waits) stand still too, so it resumes where it was (VDA 5050 startPause/stopPause).
+     */
+    public void setPaused(boolean on) {
+        sim.locked(() -> {
+            if (on && !paused) {
+                body.setLinearVelocity(0, 0);
+            }
+            paused = on;
+            return null;
+        });
+    }
+
+    public boolean isPaused() {
+        return paused;
+    }
+
+    /** The robot's battery ({@link Battery#defaults()} unless set). */
+    public Battery battery() {
+        return battery;
+    }
+
+    /** Gives the robot another battery (e.g. a nearly empty one, to test what an empty battery does). */
+    public void setBattery(Battery b) {
+        Checks.notNull("battery", b);
+        sim.locked(() -> {
+            battery = b;
+            return null;
+        });
+    }
+
     /** Forgets seen-closed doors, so the next route may try them again. */
     public void forgetClosedDoors() {
         knownClosedDoors.clear();
@@ -93,8 +128,10 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown waypoint
      */
     public ActionResult moveTo(String waypoint) {
-        sim.plan().waypoint(waypoint);
-        return run(routeMove("moveTo(" + waypoint + ")", waypoint, null));
+        return sim.locked(() -> {
+            sim.plan().waypoint(waypoint);
+            return run(routeMove("moveTo(" + waypoint + ")", waypoint, null));
+        });
     }
 
     /**
@@ -105,8 +142,10 @@ public final class Robot extends Agent {
      * @throws IllegalStateException if the robot is busy with another activity
      */
     public PendingAction startMoveTo(String waypoint) {
-        sim.plan().waypoint(waypoint);
-        return start(routeMove("moveTo(" + waypoint + ")", waypoint, null));
+        return sim.locked(() -> {
+            sim.plan().waypoint(waypoint);
+            return start(routeMove("moveTo(" + waypoint + ")", waypoint, null));
+        });
     }
 
     /**
@@ -115,7 +154,7 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an empty list, unknown waypoints or missing edges
      */
     public ActionResult moveAlong(List<String> waypoints) {
-        return run(alongActivity(waypoints));
+        return sim.locked(() -> run(alongActivity(waypoints)));
     }
 
     /**
@@ -125,7 +164,7 @@ public final class Robot extends Agent {
      * @throws IllegalStateException if the robot is busy with another activity
      */
     public PendingAction startMoveAlong(List<String> waypoints) {
-        return start(alongActivity(waypoints));
+        return sim.locked(() -> start(alongActivity(waypoints)));
     }
 
     private Activity alongActivity(List<String> waypoints) {
@@ -153,14 +192,16 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown person or waypoint
      */
     public ActionResult guide(String person, String waypoint) {
-        Person p = sim.person(person);
-        sim.plan().waypoint(waypoint);
-        p.follow(this, GUIDE_DISTANCE);
-        try {
-            return run(routeMove("guide(" + person + ", " + waypoint + ")", waypoint, p));
-        } finally {
-            p.standStill();
-        }
+        return sim.locked(() -> {
+            Person p = sim.person(person);
+            sim.plan().waypoint(waypoint);
+            p.follow(this, GUIDE_DISTANCE);
+            try {
+                return run(routeMove("guide(" + person + ", " + waypoint + ")", waypoint, p));
+            } finally {
+                p.standStill();
+            }
+        });
     }
 
     /**
@@ -172,15 +213,17 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown person or an invalid band or timeout
      */
     public ActionResult follow(String person, double minDistance, double maxDistance, double timeoutSeconds) {
-        Person p = sim.person(person);
-        Checks.positive("min distance (m)", minDistance);
-        Checks.positive("max distance (m)", maxDistance);
-        Checks.positive("timeout (s)", timeoutSeconds);
-        if (minDistance >= maxDistance) {
-            throw new IllegalArgumentException("min distance " + minDistance + " m must be < max distance "
-                    + maxDistance + " m");
-        }
-        return run(new FollowActivity(this, p, minDistance, maxDistance, timeoutSeconds));
+        return sim.locked(() -> {
+            Person p = sim.person(person);
+            Checks.positive("min distance (m)", minDistance);
+            Checks.positive("max distance (m)", maxDistance);
+            Checks.positive("timeout (s)", timeoutSeconds);
+            if (minDistance >= maxDistance) {
+                throw new IllegalArgumentException("min distance " + minDistance + " m must be < max distance "
+                        + maxDistance + " m");
+            }
+            return run(new FollowActivity(this, p, minDistance, maxDistance, timeoutSeconds));
+        });
     }
 
     /**
@@ -191,19 +234,21 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown item
      */
     public ActionResult approach(String item) {
-        Item it = sim.item(item);
-        String action = "approach(" + item + ")";
-        if (it.isRemoved() || it.holder().isPresent()) {
-            return run(new Activity.Failed(this, action, Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
-                    + (it.isRemoved() ? "gone" : "carried")));
-        }
-        Vec2 target = it.position();
-        Waypoint near = sim.plan().nearestWaypoint(target);
-        double d = near.position().distance(target);
-        double stopShort = 0.7 * spec.reach();
-        Vec2 stop = d <= stopShort ? null
-                : near.position().plus(target.minus(near.position()).times((d - stopShort) / d));
-        return run(routeMove(action, near.name(), null, stop));
+        return sim.locked(() -> {
+            Item it = sim.item(item);
+            String action = "approach(" + item + ")";
+            if (it.isRemoved() || it.holder().isPresent()) {
+                return run(new Activity.Failed(this, action, Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
+                        + (it.isRemoved() ? "gone" : "carried")));
+            }
+            Vec2 target = it.position();
+            Waypoint near = sim.plan().nearestWaypoint(target);
+            double d = near.position().distance(target);
+            double stopShort = 0.7 * spec.reach();
+            Vec2 stop = d <= stopShort ? null
+                    : near.position().plus(target.minus(near.position()).times((d - stopShort) / d));
+            return run(routeMove(action, near.name(), null, stop));
+        });
     }
 
     /**
@@ -213,27 +258,29 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown item
      */
     public ActionResult pick(String item) {
-        Item it = sim.item(item);
-        String action = "pick(" + item + ")";
-        return run(new HandlingActivity(this, action, () -> {
-            if (it.isRemoved() || it.holder().isPresent()) {
-                return new HandlingActivity.Problem(Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
-                        + (it.isRemoved() ? "gone" : "held by " + it.holder().get().name()));
-            }
-            double d = it.position().distance(position());
-            if (d > spec.reach()) {
-                return new HandlingActivity.Problem(Failure.OUT_OF_REACH, String.format(Locale.ROOT,
-                        "item '%s' is %.2f m away, reach is %.2f m", item, d, spec.reach()));
-            }
-            if (carried.size() >= spec.capacity()) {
-                return new HandlingActivity.Problem(Failure.CAPACITY_EXCEEDED, "already carrying " + carried.size() + " item(s)");
-            }
-            return null;
-        }, () -> {
-            carried.add(it);
-            it.pickedBy(this);
-            return "picked '" + item + "'";
-        }));
+        return sim.locked(() -> {
+            Item it = sim.item(item);
+            String action = "pick(" + item + ")";
+            return run(new HandlingActivity(this, action, () -> {
+                if (it.isRemoved() || it.holder().isPresent()) {
+                    return new HandlingActivity.Problem(Failure.ITEM_UNAVAILABLE, "item '" + item + "' is "
+                            + (it.isRemoved() ? "gone" : "held by " + it.holder().get().name()));
+                }
+                double d = it.position().distance(position());
+                if (d > spec.reach()) {
+                    return new HandlingActivity.Problem(Failure.OUT_OF_REACH, String.format(Locale.ROOT,
+                            "item '%s' is %.2f m away, reach is %.2f m", item, d, spec.reach()));
+                }
+                if (carried.size() >= spec.capacity()) {
+                    return new HandlingActivity.Problem(Failure.CAPACITY_EXCEEDED, "already carrying " + carried.size() + " item(s)");
+                }
+                return null;
+            }, () -> {
+                carried.add(it);
+                it.pickedBy(this);
+                return "picked '" + item + "'";
+            }));
+        });
     }
 
     /**
@@ -242,13 +289,15 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown item
      */
     public ActionResult place(String item) {
-        Item it = sim.item(item);
-        return run(new HandlingActivity(this, "place(" + item + ")", () -> carried.contains(it) ? null
-                : new HandlingActivity.Problem(Failure.NOT_CARRYING, "not carrying item '" + item + "'"), () -> {
-                    carried.remove(it);
-                    it.placeAt(position());
-                    return "placed '" + item + "' in " + it.room().map(Room::name).orElse("no room");
-                }));
+        return sim.locked(() -> {
+            Item it = sim.item(item);
+            return run(new HandlingActivity(this, "place(" + item + ")", () -> carried.contains(it) ? null
+                    : new HandlingActivity.Problem(Failure.NOT_CARRYING, "not carrying item '" + item + "'"), () -> {
+                        carried.remove(it);
+                        it.placeAt(position());
+                        return "placed '" + item + "' in " + it.room().map(Room::name).orElse("no room");
+                    }));
+        });
     }
 
     /**
@@ -257,17 +306,19 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown door
      */
     public ActionResult openDoor(String door) {
-        Door d = sim.door(door);
-        return run(new HandlingActivity(this, "openDoor(" + door + ")", () -> {
-            if (d.isLocked()) {
-                return new HandlingActivity.Problem(Failure.DOOR_LOCKED, "door '" + door + "' is locked");
-            }
-            return doorReach(d);
-        }, () -> {
-            d.open();
-            knownClosedDoors.remove(door);
-            return "opened '" + door + "'";
-        }));
+        return sim.locked(() -> {
+            Door d = sim.door(door);
+            return run(new HandlingActivity(this, "openDoor(" + door + ")", () -> {
+                if (d.isLocked()) {
+                    return new HandlingActivity.Problem(Failure.DOOR_LOCKED, "door '" + door + "' is locked");
+                }
+                return doorReach(d);
+            }, () -> {
+                d.open();
+                knownClosedDoors.remove(door);
+                return "opened '" + door + "'";
+            }));
+        });
     }
 
     /**
@@ -276,11 +327,13 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for an unknown door
      */
     public ActionResult closeDoor(String door) {
-        Door d = sim.door(door);
-        return run(new HandlingActivity(this, "closeDoor(" + door + ")", () -> doorReach(d), () -> {
-            sim.closeDoor(door);
-            return "closing '" + door + "'";
-        }));
+        return sim.locked(() -> {
+            Door d = sim.door(door);
+            return run(new HandlingActivity(this, "closeDoor(" + door + ")", () -> doorReach(d), () -> {
+                sim.closeDoor(door);
+                return "closing '" + door + "'";
+            }));
+        });
     }
 
     /**
@@ -289,8 +342,10 @@ public final class Robot extends Agent {
      * @throws IllegalArgumentException for a negative or non-finite duration
      */
     public ActionResult waitFor(double seconds) {
-        Checks.nonNegative("wait (s)", seconds);
-        return run(new HandlingActivity(this, "wait", seconds, () -> null, () -> "waited"));
+        return sim.locked(() -> {
+            Checks.nonNegative("wait (s)", seconds);
+            return run(new HandlingActivity(this, "wait", seconds, () -> null, () -> "waited"));
+        });
     }
 
     private HandlingActivity.Problem doorReach(Door d) {
@@ -321,6 +376,7 @@ public final class Robot extends Agent {
 
     private ActionResult run(Activity a) {
         sim.requireNotStepping();
+        // with a clock, await releases the clock's lock (held by the public method) while the clock steps
         return start(a).await();
     }
 
@@ -365,6 +421,17 @@ public final class Robot extends Agent {
             }
         }
         intendedDirection = Vec2.ZERO;
+        if (paused) {
+            if (activity != null && activity.result == null) {
+                activity.shift(dt);
+            }
+            body.setLinearVelocity(0, 0);
+            return;
+        }
+        if (activity != null && activity.result == null && battery.isEmpty() && activity.drives()) {
+            activity.fail(Failure.BATTERY_EMPTY, String.format(Locale.ROOT, "battery empty (%.0f J/m over %.0f J) at %s",
+                    battery.joulesPerMetre(), battery.capacityJoules(), p));
+        }
         if (activity != null && activity.result == null) {
             activity.control(dt);
         } else {
@@ -390,6 +457,12 @@ public final class Robot extends Agent {
     @Override
     void afterStep() {
         super.afterStep();
+        Vec2 now = position();
+        if (lastPosition != null) {
+            battery.drive(now.distance(lastPosition));
+        }
+        lastPosition = now;
+        battery.dock(velocity().length() < 0.05 && sim.atDock(now), sim.stepSeconds());
         if (activity != null && activity.result != null) {
             finishActivity();
         }

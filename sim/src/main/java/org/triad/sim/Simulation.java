@@ -44,6 +44,11 @@ public final class Simulation {
     private int blockings;
     private boolean stepping;
     private final List<Runnable> stepListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final ContactWatch contacts = new ContactWatch();
+    private volatile SimulationClock clock;
+    private final Map<String, Vec2> docks = new LinkedHashMap<>();
+    /** Distance, metres, from a dock's position within which a robot standing still charges. */
+    public static final double DOCK_RANGE = 0.5;
 
     private record Scheduled(double time, long seq, String label, Runnable action) implements Comparable<Scheduled> {
         @Override
@@ -165,6 +170,38 @@ public final class Simulation {
         trace.addPerson(name);
         refreshAgents();
         return p;
+    }
+
+    /**
+     * Adds a charging dock at a position (metres): a robot standing still within {@value #DOCK_RANGE} m of it
+     * charges its {@link Battery}.
+     *
+     * @throws IllegalArgumentException for a duplicate name or a position outside every room
+     */
+    public void addDock(String name, Vec2 position) {
+        Checks.name("dock name", name);
+        Checks.notNull("position", position);
+        if (docks.containsKey(name)) {
+            throw new IllegalArgumentException("duplicate dock '" + name + "'");
+        }
+        if (plan.roomAt(position).isEmpty()) {
+            throw new IllegalArgumentException("dock '" + name + "' at " + position + " is outside every room");
+        }
+        docks.put(name, position);
+    }
+
+    /** Docks by name, in the order added. */
+    public Map<String, Vec2> docks() {
+        return Collections.unmodifiableMap(docks);
+    }
+
+    boolean atDock(Vec2 p) {
+        for (Vec2 d : docks.values()) {
+            if (d.distance(p) <= DOCK_RANGE) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Adds an item at a position (metres) inside a room. */
@@ -425,8 +462,16 @@ public final class Simulation {
 
     // ---- time ------------------------------------------------------------------------------------
 
-    /** Advances virtual time by one step: due events, doors, agent controllers, physics, trace. */
+    /**
+     * Advances virtual time by one step: due events, doors, agent controllers, physics, contacts, trace.
+     *
+     * @throws IllegalStateException when a {@link SimulationClock} steps this simulation and the caller is not it
+     */
     public void step() {
+        SimulationClock owner = clock;
+        if (owner != null && !owner.isClockThread()) {
+            throw new IllegalStateException("this simulation is stepped by its clock; command it through SimulationClock.call/submit");
+        }
         requireNotStepping();
         stepping = true;
         try {
@@ -444,6 +489,9 @@ public final class Simulation {
             steps++;
             for (Agent a : agents) {
                 a.afterStep();
+            }
+            for (Contact c : contacts.check(robots, time())) {
+                record(new TraceEvent(c.time(), "world", "contact " + c.first() + " " + c.second(), c.position(), true, ""));
             }
             if (recordTrace) {
                 recordFrame();
@@ -463,6 +511,41 @@ public final class Simulation {
      */
     public void addStepListener(Runnable listener) {
         stepListeners.add(Checks.notNull("listener", listener));
+    }
+
+    /**
+     * Calls {@code listener} on the stepping thread whenever two robots come into contact (their discs touch, within
+     * {@value ContactWatch#TOUCH} m); a pair is reported again only after it has been apart by
+     * {@value ContactWatch#APART} m. The listener may read the simulation but must not step it.
+     */
+    public void onContact(java.util.function.Consumer<Contact> listener) {
+        contacts.listen(Checks.notNull("listener", listener));
+    }
+
+    /** Robot-robot contacts so far, in order. */
+    public List<Contact> contacts() {
+        return contacts.all();
+    }
+
+    /** The clock that steps this simulation, if one was started ({@link SimulationClock#start}). */
+    public java.util.Optional<SimulationClock> clock() {
+        return java.util.Optional.ofNullable(clock);
+    }
+
+    void attach(SimulationClock c) {
+        if (clock != null) {
+            throw new IllegalStateException("this simulation already has a clock");
+        }
+        clock = c;
+    }
+
+    /**
+     * Runs {@code body} under the clock's lock if a clock steps this simulation and the caller is another thread, else
+     * directly (the clock's own thread holds the lock already; a blocking activity there fails in its await).
+     */
+    <T> T locked(java.util.function.Supplier<T> body) {
+        SimulationClock c = clock;
+        return c == null || c.isClockThread() ? body.get() : c.call(s -> body.get());
     }
 
     /** Advances virtual time by {@code seconds} (rounded up to whole steps). */

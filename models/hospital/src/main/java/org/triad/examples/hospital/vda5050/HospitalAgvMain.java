@@ -8,39 +8,56 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 
+import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.sim.Battery;
+import org.triad.vda5050.devices.DeviceLink;
+import org.triad.sim.SimulationClock;
 import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
 
 /**
- * Simulated hospital couriers as VDA 5050 AGVs on a broker, in this process, until it is stopped (SIGTERM
- * or Ctrl-C: each reports OFFLINE and draws its {@code <serial>.png}; killed hard, the broker publishes
- * their last will CONNECTIONBROKEN). What {@code ./triad robot} runs:
+ * One simulated hospital building with its couriers as VDA 5050 AGVs on a broker, in this process, until it is
+ * stopped (SIGTERM or Ctrl-C: each reports OFFLINE and draws its {@code <serial>.png}; killed hard, the broker
+ * publishes their last will CONNECTIONBROKEN). All couriers share one simulation and one clock
+ * ({@link HospitalBuilding}): they drive at the same time in the same corridors, and every contact between two
+ * of them is printed as a line {@code contact courier-1 courier-2 at (x, y) t=T s}. What {@code ./triad robot} runs:
  *
  * <pre>
- * java ... HospitalAgvMain --broker tcp://127.0.0.1:1883 [--serial courier-1 | --count N] [--speed 10] [--seed 42]
- *                          [--out DIR] [--close-fire-door-at SECONDS]
+ * java ... HospitalAgvMain --broker tcp://127.0.0.1:1883 [--serial courier-1 | --count N] [--speed 10|max] [--seed 42]
+ *                          [--out DIR] [--close-fire-door-at SECONDS] [--battery PERCENT]
  * </pre>
+ *
+ * On a clean stop it prints how fast the building ran: {@code building: 600.0 s simulated in 60.0 s (10.00x real
+ * time), CPU 12.3 s}.
  *
  * Exit code 2 for bad arguments or a broker that does not answer (one line naming host and port).
  */
 public final class HospitalAgvMain {
     /**
      * @param serials          the AGVs' serial numbers
-     * @param speed            virtual seconds per wall-clock second
+     * @param speed            virtual seconds per wall-clock second ({@code Double.POSITIVE_INFINITY}: as fast as the machine allows)
      * @param out              where each AGV draws its picture, or null
      * @param closeFireDoorAt  virtual time at which the fire door closes in every AGV's hospital, or null
+     * @param battery          every courier's initial battery charge, percent
      */
-    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
+    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery) {
+        public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
+            this(broker, serials, seed, speed, out, closeFireDoorAt, 100);
+        }
+
         public Options {
+            if (!(battery >= 0 && battery <= 100)) {
+                throw new IllegalArgumentException("--battery takes a charge in percent 0..100, not " + battery);
+            }
             if (broker == null) {
                 throw new IllegalArgumentException("--broker tcp://HOST:PORT is required");
             }
             if (serials.isEmpty()) {
                 throw new IllegalArgumentException("at least one robot is needed");
             }
-            if (!(speed > 0) || Double.isInfinite(speed)) {
-                throw new IllegalArgumentException("--speed takes a positive factor, not " + speed);
+            if (!(speed > 0)) {
+                throw new IllegalArgumentException("--speed takes a positive factor or 'max', not " + speed);
             }
             if (closeFireDoorAt != null && (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite())) {
                 throw new IllegalArgumentException("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
@@ -62,6 +79,12 @@ public final class HospitalAgvMain {
     }
 
     private HospitalAgvMain() {
+    }
+
+    /** CPU time of this process so far (all threads), nanoseconds; 0 where the JVM cannot tell. */
+    static long cpuNanos() {
+        java.lang.management.OperatingSystemMXBean os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        return os instanceof com.sun.management.OperatingSystemMXBean sun ? sun.getProcessCpuTime() : 0;
     }
 
     public static void main(String[] args) {
@@ -86,6 +109,7 @@ public final class HospitalAgvMain {
         double speed = 10;
         Path out = null;
         Double door = null;
+        double battery = 100;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (i + 1 >= args.length) {
@@ -98,9 +122,10 @@ public final class HospitalAgvMain {
                     case "--serial" -> serial = v;
                     case "--count" -> count = Integer.parseInt(v);
                     case "--seed" -> seed = Long.parseLong(v);
-                    case "--speed" -> speed = Double.parseDouble(v);
+                    case "--speed" -> speed = v.equals("max") ? Double.POSITIVE_INFINITY : Double.parseDouble(v);
                     case "--out" -> out = Path.of(v);
                     case "--close-fire-door-at" -> door = Double.parseDouble(v);
+                    case "--battery" -> battery = Double.parseDouble(v);
                     default -> throw new IllegalArgumentException("unknown option " + a);
                 }
             } catch (NumberFormatException e) {
@@ -111,41 +136,92 @@ public final class HospitalAgvMain {
             throw new IllegalArgumentException("give --serial S or --count N (serials courier-1..N), not both");
         }
         List<String> serials = count != null ? Options.numbered("courier", count) : List.of(serial == null ? "courier-1" : serial);
-        return new Options(broker, serials, seed, speed, out, door);
+        return new Options(broker, serials, seed, speed, out, door, battery);
     }
 
-    /** Starts the AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
+    /** Starts the building and its AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
     public static int serve(Options o, PrintStream out, PrintStream err) {
-        List<SimulatedAgv> agvs = new ArrayList<>();
+        List<SimulatedAgv> agvs = new java.util.concurrent.CopyOnWriteArrayList<>();
+        HospitalBuilding building;
         try {
             if (o.out() != null) {
                 Files.createDirectories(o.out());
             }
-            for (String serial : o.serials()) {
-                SimulatedAgv agv = new SimulatedAgv(o.broker(), serial, o.seed(), o.speed(), o.out(), line -> out.println(line));
-                if (o.closeFireDoorAt() != null) {
-                    agv.hospital().sim().at(o.closeFireDoorAt()).closeDoor(HospitalFloor.FIRE_DOOR);
-                }
-                agvs.add(agv.start());
-                out.printf(Locale.ROOT, "robot %s ONLINE on %s: VDA 5050 2.1.0, topics uagv/v2/triad/%s/*, %.0fx real time, in the lobby%n", serial,
-                        o.broker(), serial, o.speed());
-            }
-        } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
+            // the trace (every frame) is only kept for the pictures: a long-running building would grow without bound
+            building = new HospitalBuilding(o.seed(), o.out() != null, o.serials());
+        } catch (IllegalArgumentException e) {
             err.println("triad robot: " + e.getMessage());
-            agvs.forEach(SimulatedAgv::close);
             return 2;
         } catch (java.io.IOException e) {
             err.println("triad robot: cannot create " + o.out() + ": " + e.getMessage());
             return 2;
         }
+        for (HospitalBuilding.Courier c : building.couriers()) {
+            Battery b = c.robot().battery();
+            c.robot().setBattery(new Battery(b.capacityJoules(), b.joulesPerMetre(), b.chargingWatts(), o.battery() / 100));
+        }
+        if (o.closeFireDoorAt() != null) {
+            building.sim().at(o.closeFireDoorAt()).closeDoor(HospitalFloor.FIRE_DOOR);
+        }
+        building.onContact(c -> out.println(c));
+        long cpuStart = cpuNanos();
+        SimulationClock clock = building.start(o.speed());
+        java.util.concurrent.atomic.AtomicReference<DeviceLink> deviceLink = new java.util.concurrent.atomic.AtomicReference<>();
         CountDownLatch stopped = new CountDownLatch(1);
+        // registered before the first AGV connects: stopped at any moment from now on, every AGV reports OFFLINE
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             agvs.forEach(SimulatedAgv::close);
+            DeviceLink d = deviceLink.getAndSet(null);
+            if (d != null) {
+                d.close();
+            }
+            double simulated = clock.simulation().time();
+            double ratio = clock.achievedSpeed();
+            building.stop();
+            out.printf(Locale.ROOT, "building: %.1f s simulated in %.1f s (%.2fx real time), CPU %.1f s%n", simulated,
+                    ratio > 0 ? simulated / ratio : 0, ratio, (cpuNanos() - cpuStart) / 1e9);
             if (o.out() != null) {
                 out.println("pictures written to " + o.out().toAbsolutePath().normalize());
             }
             stopped.countDown();
         }, "agv-shutdown"));
+        String pace = Double.isInfinite(o.speed()) ? "as fast as possible" : String.format(Locale.ROOT, "%.0fx real time", o.speed());
+        try {
+            for (String serial : o.serials()) {
+                SimulatedAgv agv = new SimulatedAgv(o.broker(), building, serial, o.out(), line -> out.println(line));
+                agvs.add(agv.start());
+                String at = clock.call(s -> building.floor().waypointAt(s.robot(serial).position()));
+                out.printf(Locale.ROOT, "robot %s ONLINE on %s: VDA 5050 2.1.0, topics uagv/v2/triad/%s/*, %s, in the %s%n", serial,
+                        o.broker(), serial, pace, at);
+            }
+        } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
+            err.println("triad robot: " + e.getMessage());
+            agvs.forEach(SimulatedAgv::close);
+            agvs.clear();
+            building.stop();
+            return 2;
+        }
+        if (o.broker().startsWith("tcp://")) {
+            try {
+                deviceLink.set(DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line)));
+                BuildingDoors.serve(building, deviceLink.get());
+                out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
+                        + " answer requests on triad/devices/v1/doors/<name>/request");
+            } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
+                err.println("triad robot: " + e.getMessage());
+                agvs.forEach(SimulatedAgv::close);
+                agvs.clear();
+                DeviceLink d = deviceLink.getAndSet(null);
+                if (d != null) {
+                    d.close();
+                }
+                building.stop();
+                return 2;
+            }
+        } else {
+            out.println("devices: not served on a secured broker yet (the device protocol runs on plain tcp:// brokers)");
+        }
+        out.printf(Locale.ROOT, "building: one hospital, %d robot(s), one clock (%s)%n", agvs.size(), pace);
         try {
             stopped.await();
         } catch (InterruptedException e) {

@@ -19,9 +19,10 @@ import java.util.function.Consumer;
 
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.examples.hospital.HospitalObjects;
-import org.triad.examples.hospital.HospitalSimulation;
+import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.sim.Robot;
 import org.triad.sim.Simulation;
+import org.triad.sim.SimulationClock;
 import org.triad.sim.TracePicture;
 import org.triad.sim.Vec2;
 import org.triad.vda5050.master.MasterControl;
@@ -65,20 +66,22 @@ import generated.hospital.domain.WayPoint;
  * startPause/stopPause, factsheetRequest, stateRequest). What the simulator reports as a failure (a closed
  * door, a blocked corridor) becomes an error in the state, with the simulator's reason.
  *
- * <p>Virtual time runs {@code speed} times faster than the wall clock, so that a state message shows the
- * robot on its way. The simulation belongs to the AGV's own thread; messages reach it through a queue.
+ * <p>The AGV is one courier of a {@link HospitalBuilding}, whose clock steps one simulation for all its couriers
+ * ({@code speed} times faster than the wall clock, so that a state message shows the robot on its way). Messages
+ * reach the AGV's own thread through a queue; it handles them, and drives, under the clock's lock (see
+ * {@link SimulationClock}), and while its robot drives it handles the messages that arrive meanwhile.
  */
 public final class SimulatedAgv implements AutoCloseable {
     /** The map all positions refer to. */
     public static final String MAP_ID = "hospital";
-    /** Virtual seconds between two pacing checks. */
-    private static final double TICK = 0.05;
-
     private final String broker;
     private final String serial;
     private final double speed;
     private final Consumer<String> log;
-    private final HospitalSimulation hospital;
+    private final HospitalBuilding hospital;
+    /** Whether this AGV made its building (and starts and stops its clock) or shares one. */
+    private final boolean ownsBuilding;
+    private final HospitalBuilding.Courier courier;
     private final HospitalFloor floor;
     private final HospitalObjects objects;
     private final Simulation sim;
@@ -87,13 +90,14 @@ public final class SimulatedAgv implements AutoCloseable {
     private final HeaderIds headerIds = new HeaderIds();
     private final LinkedBlockingQueue<Received> inbox = new LinkedBlockingQueue<>();
     private final Thread thread;
+    private final java.util.concurrent.ExecutorService sender;
     private volatile boolean running = true;
     private MqttLink link;
 
     // AGV state, owned by the AGV thread
     private String orderId = "";
     private int orderUpdateId;
-    private String lastNodeId = HospitalFloor.ROBOT_START;
+    private String lastNodeId;
     private int lastNodeSequenceId;
     private final List<Node> pendingNodes = new ArrayList<>();
     private final Deque<Edge> pendingEdges = new ArrayDeque<>();
@@ -101,7 +105,6 @@ public final class SimulatedAgv implements AutoCloseable {
     private final List<AgvError> errors = new ArrayList<>();
     private final Set<String> seenOrders = new HashSet<>();
     private boolean driving;
-    private boolean paused;
     /** A new order's first node is where the AGV stands: reached at once, its actions run first. */
     private boolean atOrderStart;
     /** A faulty AGV (fault injection): drives onto its horizon as if it were released. */
@@ -110,36 +113,62 @@ public final class SimulatedAgv implements AutoCloseable {
     private String cancelActionId;
     private long lastStateNanos;
     private long lastVisualizationNanos;
-    private long paceWallNanos;
-    private double paceSim;
     private long statesSent;
 
     /**
-     * @param speed    virtual seconds per wall-clock second (1 = real time)
+     * An AGV alone in a hospital of its own (its clock starts with {@link #start()} and stops with {@link #close()}).
+     *
+     * @param speed    virtual seconds per wall-clock second (1 = real time), or {@link SimulationClock#AS_FAST_AS_POSSIBLE}
      * @param pictures a folder to draw {@code <serial>.png} into after every order, or null
      * @param log      where one-line reports go (orders received, rejected, finished)
      */
     public SimulatedAgv(String broker, String serial, long seed, double speed, Path pictures, Consumer<String> log) {
+        this(broker, new HospitalBuilding(seed, true, List.of(Objects.requireNonNull(serial, "serial"))), serial, speed, true, pictures, log);
+    }
+
+    /**
+     * The courier {@code serial} of a shared building as an AGV; it reports state and drives once the building's owner
+     * has started the clock.
+     *
+     * @param pictures a folder to draw {@code <serial>.png} (the whole building) into after every order, or null
+     * @throws IllegalArgumentException if the building has no courier {@code serial}
+     */
+    public SimulatedAgv(String broker, HospitalBuilding building, String serial, Path pictures, Consumer<String> log) {
+        this(broker, building, serial, 1, false, pictures, log);
+    }
+
+    private SimulatedAgv(String broker, HospitalBuilding building, String serial, double speed, boolean ownsBuilding, Path pictures,
+            Consumer<String> log) {
         this.broker = Objects.requireNonNull(broker, "broker");
         this.serial = Objects.requireNonNull(serial, "serial");
-        if (!(speed > 0) || Double.isInfinite(speed)) {
+        if (!(speed > 0)) {
             throw new IllegalArgumentException("speed is a positive factor, not " + speed);
         }
         Topic.STATE.of(MasterControl.TRIAD, serial);
         this.speed = speed;
         this.pictures = pictures;
         this.log = Objects.requireNonNull(log, "log");
-        this.hospital = new HospitalSimulation(seed);
+        this.hospital = building;
+        this.ownsBuilding = ownsBuilding;
+        this.courier = building.courier(serial);
         this.floor = hospital.floor();
         this.objects = hospital.objects();
         this.sim = hospital.sim();
-        this.robot = hospital.courier().robot();
+        this.robot = courier.robot();
+        this.lastNodeId = floor.waypointAt(robot.position());
         this.thread = new Thread(this::loop, "agv-" + serial);
-        sim.at(0).run("vda5050 pacing", s -> pace());
+        this.sender = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "agv-" + serial + "-send");
+            t.setDaemon(true);
+            return t;
+        });
     }
 
-    /** The simulated hospital of this AGV (to script faults before {@link #start()}: {@code hospital().sim().at(40).closeDoor(...)}). */
-    public HospitalSimulation hospital() {
+    /**
+     * The simulated hospital of this AGV (to script faults before {@link #start()}:
+     * {@code hospital().sim().at(40).closeDoor(...)}; once it runs, through {@code hospital().clock()}).
+     */
+    public HospitalBuilding hospital() {
         return hospital;
     }
 
@@ -160,6 +189,9 @@ public final class SimulatedAgv implements AutoCloseable {
         link.subscribe(topic(Topic.INSTANT_ACTIONS), inbox::add);
         link.onReconnect(this::announce);
         announce();
+        if (ownsBuilding) {
+            hospital.start(speed);
+        }
         thread.start();
         return this;
     }
@@ -179,10 +211,28 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     private void announce() {
-        link.publish(topic(Topic.CONNECTION), new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
+        send(Topic.CONNECTION, new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
                 MasterControl.TRIAD, serial, ConnectionState.ONLINE), true);
-        link.publish(topic(Topic.FACTSHEET), HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
+        send(Topic.FACTSHEET, HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
         lastStateNanos = 0;
+    }
+
+    /**
+     * Publishes in order on the AGV's sender thread: building a message needs the clock's lock (it reads the
+     * simulation), sending it (schema check, MQTT) does not, and must not hold up the building's other robots.
+     */
+    private void send(Topic t, Object message, boolean retained) {
+        try {
+            sender.execute(() -> {
+                try {
+                    link.publish(topic(t), message, retained);
+                } catch (RuntimeException e) {
+                    log.accept("agv " + serial + ": " + e.getMessage());
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException closed) {
+            // closing: nothing more goes out after OFFLINE
+        }
     }
 
     private String topic(Topic t) {
@@ -192,20 +242,38 @@ public final class SimulatedAgv implements AutoCloseable {
     // ---- the AGV thread ------------------------------------------------------------------------
 
     private void loop() {
-        publishState();
+        // the owner of a shared building may start its clock after starting its AGVs
+        SimulationClock clock;
+        while ((clock = hospital.clock().orElse(null)) == null) {
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+        clock.whileWaiting(this::whileDriving);
+        clock.run(s -> publishState());
         while (running) {
             try {
                 Received r = inbox.poll(100, TimeUnit.MILLISECONDS);
-                if (r != null) {
-                    handle(r, false);
+                if (r == null && pendingEdges.isEmpty() && pendingNodes.isEmpty() && !stateDue()) {
+                    continue; // nothing to do: leave the clock's lock to those who have
                 }
-                if (!pendingEdges.isEmpty() || !pendingNodes.isEmpty()) {
-                    executeOrder();
-                }
-                stateIfDue();
+                clock.run(s -> {
+                    if (r != null) {
+                        handle(r, false);
+                    }
+                    if (!pendingEdges.isEmpty() || !pendingNodes.isEmpty()) {
+                        executeOrder();
+                    }
+                    stateIfDue();
+                });
             } catch (InterruptedException e) {
                 return;
             } catch (RuntimeException e) {
+                if (!running) {
+                    return;
+                }
                 log.accept("agv " + serial + ": " + e);
                 error("internalError", e.toString(), List.of());
                 publishState();
@@ -344,14 +412,12 @@ public final class SimulatedAgv implements AutoCloseable {
             }
             Node end = pendingNodes.get(0);
             driving = true;
-            paceWallNanos = System.nanoTime();
-            paceSim = sim.time();
             e.actions().forEach(a -> setStatus(a, ActionStatus.RUNNING, null));
             publishState();
             boolean ok = traverse(e);
             driving = false;
             if (!ok) {
-                String why = hospital.platformLog().lastFailure().orElse("failed");
+                String why = courier.log().lastFailure().orElse("failed");
                 e.actions().forEach(a -> setStatus(a, ActionStatus.FAILED, why));
                 String[] typeAndWhy = why.split(": ", 2);
                 error(typeAndWhy[0], typeAndWhy.length > 1 ? typeAndWhy[1] : why, List.of(new Reference("orderId", order),
@@ -385,11 +451,11 @@ public final class SimulatedAgv implements AutoCloseable {
         for (Action a : e.actions()) {
             String person = parameter(a, "personId", HospitalFloor.PEOPLE.keySet());
             if (a.actionType().equals("guide")) {
-                return hospital.courier().guide(objects.person(person), src, dst);
+                return courier.robotActor().guide(objects.person(person), src, dst);
             }
-            return hospital.building().walk(objects.person(person), src, dst);
+            return courier.worldActor().walk(objects.person(person), src, dst);
         }
-        return hospital.courier().move(src, dst);
+        return courier.robotActor().move(src, dst);
     }
 
     private boolean nodeActions(Node n) {
@@ -401,11 +467,11 @@ public final class SimulatedAgv implements AutoCloseable {
             String why;
             try {
                 ok = switch (a.actionType()) {
-                    case "pick" -> hospital.courier().pick(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
-                    case "drop" -> hospital.courier().drop(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
-                    default -> hospital.courier().startFollowing(objects.person(parameter(a, "personId", HospitalFloor.PEOPLE.keySet())), w);
+                    case "pick" -> courier.robotActor().pick(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
+                    case "drop" -> courier.robotActor().drop(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
+                    default -> courier.robotActor().startFollowing(objects.person(parameter(a, "personId", HospitalFloor.PEOPLE.keySet())), w);
                 };
-                why = ok ? null : hospital.platformLog().lastFailure().orElse("failed");
+                why = ok ? null : courier.log().lastFailure().orElse("failed");
             } catch (IllegalArgumentException unknown) {
                 ok = false;
                 why = "REFUSED: " + unknown.getMessage();
@@ -469,17 +535,15 @@ public final class SimulatedAgv implements AutoCloseable {
                 }
             }
             case "startPause" -> {
-                paused = true;
+                robot.setPaused(true);
                 setStatus(a, ActionStatus.FINISHED, null);
             }
             case "stopPause" -> {
-                paused = false;
-                paceWallNanos = System.nanoTime();
-                paceSim = sim.time();
+                robot.setPaused(false);
                 setStatus(a, ActionStatus.FINISHED, null);
             }
             case "factsheetRequest" -> {
-                link.publish(topic(Topic.FACTSHEET), HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
+                send(Topic.FACTSHEET, HospitalFactsheet.of(serial, headerIds.next(Topic.FACTSHEET)), true);
                 setStatus(a, ActionStatus.FINISHED, null);
             }
             case "stateRequest" -> setStatus(a, ActionStatus.FINISHED, null);
@@ -491,36 +555,28 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     /**
-     * Runs inside the simulation every {@value #TICK} virtual seconds while an activity steps it: keeps virtual
-     * time at {@code speed} times the wall clock, holds still while paused, handles messages that arrive
-     * meanwhile and publishes state and visualization.
+     * Runs while this AGV's robot drives (its thread waits for the clock; under the clock's lock, about every 50 ms):
+     * handles the messages that arrive meanwhile (order updates, cancel, pause) and publishes state and
+     * visualization when due.
      */
-    private void pace() {
-        sim.at(sim.time() + TICK).run("vda5050 pacing", s -> pace());
+    private void whileDriving() {
         if (!running) {
             return;
         }
-        do {
-            Received r;
-            while ((r = inbox.poll()) != null) {
-                handle(r, true);
-            }
-            long target = paceWallNanos + (long) ((sim.time() - paceSim) / speed * 1e9);
-            long wait = paused ? 20_000_000L : target - System.nanoTime();
-            if (wait > 0) {
-                sleepNanos(Math.min(wait, 50_000_000L));
-            }
-            stateIfDue();
-            visualizationIfDue();
-        } while (running && (paused || System.nanoTime() < paceWallNanos + (long) ((sim.time() - paceSim) / speed * 1e9)));
-        if (paused) {
-            paceWallNanos = System.nanoTime();
-            paceSim = sim.time();
+        Received r;
+        while ((r = inbox.poll()) != null) {
+            handle(r, true);
         }
+        stateIfDue();
+        visualizationIfDue();
+    }
+
+    private boolean stateDue() {
+        return System.nanoTime() - lastStateNanos >= 1_000_000_000L;
     }
 
     private void stateIfDue() {
-        if (System.nanoTime() - lastStateNanos >= 1_000_000_000L) {
+        if (stateDue()) {
             publishState();
         }
     }
@@ -528,7 +584,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private void visualizationIfDue() {
         if (System.nanoTime() - lastVisualizationNanos >= 250_000_000L) {
             lastVisualizationNanos = System.nanoTime();
-            link.publish(topic(Topic.VISUALIZATION), new Visualization(headerIds.next(Topic.VISUALIZATION), HeaderIds.now(), Header.VERSION,
+            send(Topic.VISUALIZATION, new Visualization(headerIds.next(Topic.VISUALIZATION), HeaderIds.now(), Header.VERSION,
                     MasterControl.TRIAD, serial, position(), velocity()), false);
         }
     }
@@ -536,7 +592,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private void publishState() {
         lastStateNanos = System.nanoTime();
         statesSent++;
-        link.publish(topic(Topic.STATE), state(), false);
+        send(Topic.STATE, state(), false);
     }
 
     AgvState state() {
@@ -545,8 +601,8 @@ public final class SimulatedAgv implements AutoCloseable {
         List<EdgeState> edgeStates = pendingEdges.stream().map(e -> new EdgeState(e.edgeId(), e.sequenceId(), null, e.released())).toList();
         List<Load> loads = robot.carried().stream().map(i -> new Load(i.name(), "item", null)).toList();
         return new AgvState(headerIds.next(Topic.STATE), HeaderIds.now(), Header.VERSION, MasterControl.TRIAD, serial, orderId,
-                orderUpdateId, null, lastNodeId, lastNodeSequenceId, nodeStates, edgeStates, position(), velocity(), loads, driving, paused,
-                null, null, List.copyOf(actionStates.values()), new BatteryState(100, false), "AUTOMATIC", List.copyOf(errors), information(),
+                orderUpdateId, null, lastNodeId, lastNodeSequenceId, nodeStates, edgeStates, position(), velocity(), loads, driving, robot.isPaused(),
+                null, null, List.copyOf(actionStates.values()), new BatteryState(robot.battery().percent(), robot.battery().isCharging()), "AUTOMATIC", List.copyOf(errors), information(),
                 new SafetyState("NONE", false));
     }
 
@@ -554,7 +610,7 @@ public final class SimulatedAgv implements AutoCloseable {
     private List<Information> information() {
         List<Information> info = new ArrayList<>();
         for (generated.hospital.domain.Person p : objects.people()) {
-            if (hospital.courier().following(p)) {
+            if (courier.robotActor().following(p)) {
                 info.add(new Information("following", List.of(new Reference("personId", p.name())), "following " + p.name(), "INFO"));
             }
         }
@@ -623,13 +679,6 @@ public final class SimulatedAgv implements AutoCloseable {
         }
     }
 
-    private static void sleepNanos(long nanos) {
-        try {
-            TimeUnit.NANOSECONDS.sleep(nanos);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
 
     /** Reports OFFLINE (retained) and disconnects cleanly, so no last will is sent; draws the picture. */
     @Override
@@ -642,10 +691,26 @@ public final class SimulatedAgv implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         if (link != null) {
-            link.publish(topic(Topic.CONNECTION), new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
+            send(Topic.CONNECTION, new Connection(headerIds.next(Topic.CONNECTION), HeaderIds.now(), Header.VERSION,
                     MasterControl.TRIAD, serial, ConnectionState.OFFLINE), true);
+        }
+        sender.shutdown();
+        try {
+            sender.awaitTermination(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (link != null) {
             link.close();
         }
-        drawPicture();
+        if (ownsBuilding) {
+            hospital.stop();
+        }
+        Optional<SimulationClock> clock = hospital.clock().filter(SimulationClock::isRunning);
+        if (clock.isPresent()) {
+            clock.get().run(s -> drawPicture());
+        } else {
+            drawPicture();
+        }
     }
 }

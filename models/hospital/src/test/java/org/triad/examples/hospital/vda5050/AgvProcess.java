@@ -23,20 +23,31 @@ final class AgvProcess implements AutoCloseable {
     }
 
     static AgvProcess start(String broker, String serial, double speed, Path dir, String... extra) {
+        List<String> args = new ArrayList<>(List.of("--broker", broker, "--serial", serial, "--speed", Double.toString(speed)));
+        args.addAll(List.of(extra));
+        return launch(args, dir.resolve(serial + ".log"), serial + " ONLINE");
+    }
+
+    /** One building with {@code count} couriers (courier-1 .. courier-N) in one JVM, once all are online. */
+    static AgvProcess building(String broker, int count, double speed, Path dir, String... extra) {
+        List<String> args = new ArrayList<>(List.of("--broker", broker, "--count", Integer.toString(count), "--speed", Double.toString(speed)));
+        args.addAll(List.of(extra));
+        return launch(args, dir.resolve("building.log"), "building: one hospital");
+    }
+
+    private static AgvProcess launch(List<String> args, Path out, String ready) {
         try {
-            Files.createDirectories(dir);
-            Path out = dir.resolve(serial + ".log");
+            Files.createDirectories(out.getParent());
             List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx256m", "-cp",
-                    System.getProperty("java.class.path"), HospitalAgvMain.class.getName(), "--broker", broker, "--serial", serial, "--speed",
-                    Double.toString(speed)));
-            cmd.addAll(List.of(extra));
+                    System.getProperty("java.class.path"), HospitalAgvMain.class.getName()));
+            cmd.addAll(args);
             Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(out.toFile()).start();
             AgvProcess agv = new AgvProcess(p, out);
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (!agv.output().contains(serial + " ONLINE")) {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (!agv.output().contains(ready)) {
                 if (!p.isAlive() || System.nanoTime() > deadline) {
                     agv.close();
-                    throw new IllegalStateException("robot " + serial + " did not come online: " + agv.output());
+                    throw new IllegalStateException("no '" + ready + "' from the robots' process: " + agv.output());
                 }
                 Thread.sleep(50);
             }
@@ -61,6 +72,16 @@ final class AgvProcess implements AutoCloseable {
     /** The lines the robot printed that contain {@code text}. */
     List<String> lines(String text) {
         return output().lines().filter(l -> l.contains(text)).toList();
+    }
+
+    /** SIGTERM, and waits for the process to end (it reports OFFLINE and prints how fast its building ran). */
+    void stop() {
+        process.destroy();
+        try {
+            process.waitFor(30, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** SIGKILL: the process dies without a word, the broker publishes its last will. */

@@ -1,0 +1,156 @@
+package org.triad.examples.hospital;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.function.Consumer;
+
+import org.triad.sim.Contact;
+import org.triad.sim.PersonSpec;
+import org.triad.sim.Rect;
+import org.triad.sim.Robot;
+import org.triad.sim.RobotSpec;
+import org.triad.sim.Simulation;
+import org.triad.sim.SimulationClock;
+import org.triad.sim.Vec2;
+
+/**
+ * The simulated hospital as one building: one dyn4j simulation of the models' floor with its people and items and
+ * many couriers, each with its own {@code IRobot}/{@code IWorld} implementation ({@link Courier}) over the shared
+ * world. An item one courier picked up is gone for the others; couriers meet in the corridors and block each
+ * other. Each courier has a {@link org.triad.sim.Battery} (the simulation's defaults: 50 J per metre driven, 360 kJ
+ * full) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
+ * along the walls of the lobby, then of ward 3, ward 2, storage, x-ray and ward 1 (20 spots a room).
+ *
+ * <p>Script the building ({@code sim().at(40).closeDoor(...)}) before {@link #start(double)}; afterwards the clock
+ * steps it and everything goes through {@link SimulationClock#call} or the couriers' blocking actions.
+ */
+public final class HospitalBuilding {
+    /** The charging dock, at the lobby's waypoint: a courier standing still there charges its battery. */
+    public static final String DOCK = "lobby";
+    /** Rooms whose walls the couriers park along, in order of filling. */
+    static final List<String> PARKING = List.of("lobby", "ward3", "ward2", "storage", "xray", "ward1");
+
+    /** One courier of the building: its simulated robot, its model actors' implementations and its own log of reasons. */
+    public record Courier(String name, Robot robot, SimulatedCourier robotActor, SimulatedBuilding worldActor, PlatformLog log) {
+    }
+
+    private final HospitalFloor floor = new HospitalFloor();
+    private final HospitalObjects objects = new HospitalObjects();
+    private final Simulation sim;
+    private final Map<String, Courier> couriers = new LinkedHashMap<>();
+    private SimulationClock clock;
+
+    /**
+     * @param seed        random seed of the people's choices
+     * @param recordTrace whether to keep every frame (for pictures); a long-running building turns it off
+     * @param names       the couriers' names (distinct), e.g. their VDA 5050 serial numbers
+     * @throws IllegalArgumentException for no names, duplicates, or more couriers than parking spots
+     */
+    public HospitalBuilding(long seed, boolean recordTrace, List<String> names) {
+        Objects.requireNonNull(names, "names");
+        if (names.isEmpty()) {
+            throw new IllegalArgumentException("a building needs at least one courier");
+        }
+        sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
+        HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
+                PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
+        sim.addDock(DOCK, floor.plan().waypoint(DOCK).position());
+        Whereabouts whereabouts = new Whereabouts(floor);
+        List<Vec2> spots = parkingSpots();
+        int spot = 0;
+        for (int i = 0; i < names.size(); i++) {
+            String name = names.get(i);
+            if (couriers.containsKey(name)) {
+                throw new IllegalArgumentException("duplicate courier '" + name + "'");
+            }
+            Robot robot = null;
+            if (i == 0) {
+                robot = sim.addRobot(name, HospitalFloor.ROBOT_START, RobotSpec.defaults());
+            }
+            while (robot == null) {
+                if (spot >= spots.size()) {
+                    throw new IllegalArgumentException("the hospital has room for " + i + " couriers, not " + names.size());
+                }
+                try {
+                    robot = sim.addRobot(name, spots.get(spot++), RobotSpec.defaults());
+                } catch (IllegalArgumentException occupied) {
+                    // someone stands there: the next spot
+                }
+            }
+            PlatformLog log = new PlatformLog();
+            SimulatedCourier actor = new SimulatedCourier(floor, objects, sim, robot, whereabouts, log);
+            couriers.put(name, new Courier(name, robot, actor, new SimulatedBuilding(floor, objects, sim, actor, whereabouts, log), log));
+        }
+    }
+
+    /** Two columns along each side wall of the parking rooms, 0.8 m apart, clear of the doors in the middle. */
+    private List<Vec2> parkingSpots() {
+        List<Vec2> spots = new ArrayList<>();
+        for (String room : PARKING) {
+            Rect r = floor.plan().room(room).bounds();
+            double[] xs = {r.minX() + 0.6, r.maxX() - 0.6, r.minX() + 1.4, r.maxX() - 1.4};
+            for (double x : xs) {
+                for (double y = r.minY() + 0.6; y <= r.maxY() - 0.6 + 1e-9; y += 0.8) {
+                    spots.add(new Vec2(x, y));
+                }
+            }
+        }
+        return spots;
+    }
+
+    /** Starts the building's clock ({@code speed} virtual seconds per wall second, or {@link SimulationClock#AS_FAST_AS_POSSIBLE}). */
+    public synchronized SimulationClock start(double speed) {
+        if (clock != null) {
+            throw new IllegalStateException("the building runs already");
+        }
+        clock = SimulationClock.start(sim, speed);
+        return clock;
+    }
+
+    /** The clock, once started. */
+    public synchronized java.util.Optional<SimulationClock> clock() {
+        return java.util.Optional.ofNullable(clock);
+    }
+
+    /** Reports every contact between two couriers (on the clock thread; keep it short). */
+    public void onContact(Consumer<Contact> listener) {
+        sim.onContact(listener);
+    }
+
+    public Simulation sim() {
+        return sim;
+    }
+
+    public HospitalFloor floor() {
+        return floor;
+    }
+
+    public HospitalObjects objects() {
+        return objects;
+    }
+
+    /** @throws IllegalArgumentException for a name that is not a courier of this building */
+    public Courier courier(String name) {
+        Courier c = couriers.get(name);
+        if (c == null) {
+            throw new IllegalArgumentException("no courier '" + name + "' in this building; couriers: " + couriers.keySet());
+        }
+        return c;
+    }
+
+    /** The couriers in the order given. */
+    public List<Courier> couriers() {
+        return Collections.unmodifiableList(new ArrayList<>(couriers.values()));
+    }
+
+    /** Stops the clock (if started). */
+    public synchronized void stop() {
+        if (clock != null) {
+            clock.close();
+        }
+    }
+}

@@ -1,0 +1,141 @@
+package org.triad.vda5050.devices;
+
+import java.net.URI;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
+
+import org.eclipse.paho.client.mqttv3.IMqttDeliveryToken;
+import org.eclipse.paho.client.mqttv3.MqttCallbackExtended;
+import org.eclipse.paho.client.mqttv3.MqttClient;
+import org.eclipse.paho.client.mqttv3.MqttConnectOptions;
+import org.eclipse.paho.client.mqttv3.MqttException;
+import org.eclipse.paho.client.mqttv3.MqttMessage;
+import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
+import org.triad.vda5050.mqtt.BrokerUnreachableException;
+import org.triad.vda5050.protocol.VdaJson;
+
+/**
+ * An MQTT connection for the device protocol ({@link DeviceMessages}): JSON messages on {@code triad/devices/v1/...},
+ * QoS 1. A message that is not JSON of the expected shape is reported as one line and ignored. Plain {@code tcp://}
+ * brokers only for now (the secured broker's ACL has no device topics yet).
+ */
+public final class DeviceLink implements AutoCloseable {
+    private final MqttClient client;
+    private final Consumer<String> problems;
+    private final Map<String, Consumer<byte[]>> handlers = new ConcurrentHashMap<>();
+
+    private DeviceLink(MqttClient client, Consumer<String> problems) {
+        this.client = client;
+        this.problems = problems;
+    }
+
+    /**
+     * @throws BrokerUnreachableException when no broker answers within 5 s
+     * @throws IllegalArgumentException for an address that is not {@code tcp://HOST:PORT}
+     */
+    public static DeviceLink connect(String broker, String clientId, Consumer<String> problems) {
+        Objects.requireNonNull(problems, "problems");
+        URI uri;
+        try {
+            uri = URI.create(broker);
+        } catch (IllegalArgumentException e) {
+            uri = null;
+        }
+        if (uri == null || !"tcp".equals(uri.getScheme()) || uri.getHost() == null || uri.getPort() < 0) {
+            throw new IllegalArgumentException("the device protocol needs a plain broker address tcp://HOST:PORT, not '" + broker + "'");
+        }
+        try {
+            MqttClient c = new MqttClient(broker, clientId, new MemoryPersistence());
+            c.setTimeToWait(2000);
+            DeviceLink link = new DeviceLink(c, problems);
+            c.setCallback(link.new Callback());
+            MqttConnectOptions o = new MqttConnectOptions();
+            o.setCleanSession(true);
+            o.setAutomaticReconnect(true);
+            o.setMaxReconnectDelay(1000);
+            o.setConnectionTimeout(5);
+            c.connect(o);
+            return link;
+        } catch (MqttException e) {
+            throw new BrokerUnreachableException("no MQTT broker at " + broker + " for the devices: " + e.getMessage(), e);
+        }
+    }
+
+    /** Receives messages of type {@code type} on {@code topic} (an exact topic). */
+    public <T> void subscribe(String topic, Class<T> type, Consumer<T> handler) {
+        handlers.put(topic, payload -> {
+            T message;
+            try {
+                message = VdaJson.bind(VdaJson.parse(payload), type);
+            } catch (RuntimeException e) {
+                problems.accept("devices: ignored message on " + topic + ": " + e.getMessage());
+                return;
+            }
+            handler.accept(message);
+        });
+        try {
+            client.subscribe(topic, 1);
+        } catch (MqttException e) {
+            throw new IllegalStateException("cannot subscribe to " + topic + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Publishes a message as JSON (QoS 1), waiting at most 2 s for the broker. A message that cannot be sent (no
+     * broker) is reported as one line, not thrown: a device's state is published again at its next change, and a
+     * client whose request got lost says so after its timeout.
+     */
+    public void publish(String topic, Object message, boolean retained) {
+        try {
+            client.publish(topic, VdaJson.write(message), 1, retained);
+        } catch (MqttException e) {
+            problems.accept("devices: could not publish to " + topic + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void close() {
+        try {
+            if (client.isConnected()) {
+                client.disconnect(2000);
+            }
+            client.close();
+        } catch (MqttException e) {
+            problems.accept("devices: closing the connection: " + e.getMessage());
+        }
+    }
+
+    private final class Callback implements MqttCallbackExtended {
+        @Override
+        public void connectComplete(boolean reconnect, String serverURI) {
+            if (reconnect) {
+                for (String t : handlers.keySet()) {
+                    try {
+                        client.subscribe(t, 1);
+                    } catch (MqttException e) {
+                        problems.accept("devices: re-subscribing to " + t + ": " + e.getMessage());
+                    }
+                }
+            }
+        }
+
+        @Override
+        public void connectionLost(Throwable cause) {
+            problems.accept("devices: connection lost: " + cause);
+        }
+
+        @Override
+        public void messageArrived(String topic, MqttMessage message) {
+            Consumer<byte[]> h = handlers.get(topic);
+            if (h != null) {
+                h.accept(message.getPayload());
+            }
+        }
+
+        @Override
+        public void deliveryComplete(IMqttDeliveryToken token) {
+        }
+    }
+}
