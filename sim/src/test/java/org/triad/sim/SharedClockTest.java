@@ -21,7 +21,9 @@ class SharedClockTest {
         Simulation sim = Simulation.builder(Scenes.PLAN).seed(1).recordTrace(false).build();
         Robot a = sim.addRobot("a", "corridorWest", RobotSpec.defaults());
         Robot b = sim.addRobot("b", "corridorEast", RobotSpec.defaults());
-        try (SimulationClock clock = SimulationClock.start(sim, SimulationClock.AS_FAST_AS_POSSIBLE)) {
+        // paced (20x real time), so that the moves last several of the waiting thread's 50 ms slices: as
+        // fast as possible they may end within the first slice, and the hook never has a turn
+        try (SimulationClock clock = SimulationClock.start(sim, 20.0)) {
             assertThrows(IllegalStateException.class, sim::step, "only the clock steps");
             AtomicInteger hooked = new AtomicInteger();
             CompletableFuture<ActionResult> east = CompletableFuture.supplyAsync(() -> {
