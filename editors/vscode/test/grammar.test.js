@@ -19,7 +19,7 @@ const pkg = require('../package.json');
 const COMMON = ['true', 'false', 'boolean', 'int', 'double', 'String'];
 const KEYWORDS = {
   cd: ['classdiagram', 'class', 'abstract', 'extends', 'enum', ...COMMON],
-  actor: ['domain', 'robot', 'world', 'property', 'action', 'pre', 'post', ...COMMON],
+  actor: ['domain', 'robot', 'world', 'property', 'action', 'pre', 'post', 'cost', ...COMMON],
   goal: ['domain', 'goal', ...COMMON],
   task: ['domain', 'task', ...COMMON],
   state: ['domain', 'state', ...COMMON],
