@@ -106,7 +106,10 @@ class TrafficVdaTest {
         AtomicBoolean both = new AtomicBoolean();
         AtomicBoolean sampling = new AtomicBoolean(true);
         Future<?> sampler = pool.submit(() -> {
-            while (sampling.get()) {
+            // one last sample after sampling is switched off: a robot's arrival may be the state its drive
+            // returned on, seen after the previous sample
+            for (boolean last = false; !last; ) {
+                last = !sampling.get();
                 AgvState s1 = r1.state().orElseThrow();
                 AgvState s2 = r2.state().orElseThrow();
                 if (inWestCorridor(s1) && inWestCorridor(s2)) {
@@ -244,7 +247,10 @@ class TrafficVdaTest {
         List<String> arrivals = new CopyOnWriteArrayList<>();
         AtomicBoolean sampling = new AtomicBoolean(true);
         Future<?> sampler = pool.submit(() -> {
-            while (sampling.get()) {
+            // one last sample after sampling is switched off: a robot's arrival may be the state its drive
+            // returned on, seen after the previous sample
+            for (boolean last = false; !last; ) {
+                last = !sampling.get();
                 AgvState s1 = r1.state().orElseThrow();
                 AgvState s2 = r2.state().orElseThrow();
                 both.compareAndSet(false, inEastPassage(s1) && inEastPassage(s2));
