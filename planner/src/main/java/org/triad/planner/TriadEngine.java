@@ -114,6 +114,14 @@ public final class TriadEngine implements PddlPlanner {
      * Downward 96, 207, 238).
      */
     static final long IMPROVEMENT_WORK_PER_SQUARED_STEP = WorkMeter.UNITS_PER_SECOND / 10_000;
+    /**
+     * A first plan of several goals from the goal agenda may get up to this many times the
+     * improvement cap from its share per squared step (plans of more than about 320 steps):
+     * logistics00 50-0's 417 steps get 17 s worth, and the lazy search that finds 327 needs about 15.
+     * Such plans are cheap to find and long because the agenda ships one goal at a time, so the
+     * work goes where the plan is long; a plan the portfolio found still gets at most half the cap.
+     */
+    static final long LONG_PLAN_CAP_FACTOR = 2;
     /** Evaluations each improving search may use per step of such a plan (elevators p22 needs 45). */
     static final long IMPROVEMENT_EVALUATIONS_PER_STEP = 60;
 
@@ -301,7 +309,8 @@ public final class TriadEngine implements PddlPlanner {
             // work, at most half the cap, so that improving it does not double a long search (depot).
             long extra = open.size() <= 1 ? 0 : IMPROVEMENT_EXTRA_WORK
                     + (fromAgenda ? IMPROVEMENT_WORK_PER_SQUARED_STEP * plan.length * plan.length : 0);
-            long budget = Math.min(improvementCap, Math.min(improvementCap / 2, IMPROVEMENT_WORK_FACTOR * firstPlan) + extra);
+            long cap = fromAgenda && open.size() > 1 ? LONG_PLAN_CAP_FACTOR * improvementCap : improvementCap;
+            long budget = Math.min(cap, Math.min(improvementCap / 2, IMPROVEMENT_WORK_FACTOR * firstPlan) + extra);
             long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
                     open.size() <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
             PlanImprover improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
