@@ -5,7 +5,7 @@ import java.nio.file.Path;
 
 /**
  * The arguments of {@code triad solve} in their plain form ({@code DOMAIN PROBLEM}, {@code -o}/{@code --plan PLAN},
- * {@code --planner NAME}, {@code --timeout SECONDS}, each value its own argument), read without picocli,
+ * {@code --planner NAME}, {@code --timeout SECONDS}, {@code --seed N}, each value its own argument), read without picocli,
  * whose reflection over every command costs a small solve most of its start-up. Anything else (help,
  * {@code --opt=value}, {@code @file}s, {@code --}, a repeated or unknown option, a value that is not
  * valid) is left to picocli ({@link #parse} answers null), so usage errors read exactly as before.
@@ -16,6 +16,8 @@ final class SolveArguments {
 	Path plan;
 	String planner = "triad";
 	double timeoutSeconds = 60;
+	/** {@code --seed N}, or null */
+	Long seed;
 
 	private SolveArguments() {
 	}
@@ -26,6 +28,7 @@ final class SolveArguments {
 		boolean planSet = false;
 		boolean plannerSet = false;
 		boolean timeoutSet = false;
+		boolean seedSet = false;
 		int positional = 0;
 		try {
 			for (int i = 1; i < args.length; i++) {
@@ -60,6 +63,13 @@ final class SolveArguments {
 							if (!SolveRun.validTimeout(a.timeoutSeconds)) {
 								return null;
 							}
+							break;
+						case "--seed":
+							if (seedSet) {
+								return null;
+							}
+							seedSet = true;
+							a.seed = Long.parseLong(value);
 							break;
 						default:
 							return null;

@@ -33,6 +33,11 @@ public final class SolveCommand implements Callable<Integer> {
 	@Option(names = "--timeout", paramLabel = "SECONDS", description = "time limit in seconds (default: ${DEFAULT-VALUE})")
 	private double timeoutSeconds = 60;
 
+	@Option(names = "--seed", paramLabel = "N",
+			description = "accepted, and changes nothing: no part of planning is randomized (ties are broken by ids, budgets count work),"
+					+ " so every run gives the same plan; a note beside the plan says so")
+	private Long seed;
+
 	@CommandLine.Spec
 	private CommandLine.Model.CommandSpec spec;
 
@@ -49,6 +54,6 @@ public final class SolveCommand implements Callable<Integer> {
 		} catch (IllegalArgumentException e) {
 			throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
 		}
-		return new SolveRun(domainFile, problemFile, planFile, engine, timeoutSeconds).run(out, err);
+		return new SolveRun(domainFile, problemFile, planFile, engine, timeoutSeconds, seed).run(out, err);
 	}
 }

@@ -26,15 +26,30 @@ final class SolveRun {
 	private final Path planFile;
 	private final PddlPlanner engine;
 	private final double timeoutSeconds;
+	private final Long seed;
 
 	/** @param planFile where to write the plan too, or null */
 	SolveRun(Path domainFile, Path problemFile, Path planFile, PddlPlanner engine, double timeoutSeconds) {
+		this(domainFile, problemFile, planFile, engine, timeoutSeconds, null);
+	}
+
+	/** @param seed the {@code --seed} given, or null */
+	SolveRun(Path domainFile, Path problemFile, Path planFile, PddlPlanner engine, double timeoutSeconds, Long seed) {
+		this.seed = seed;
 		this.domainFile = domainFile;
 		this.problemFile = problemFile;
 		this.planFile = planFile;
 		this.engine = engine;
 		this.timeoutSeconds = timeoutSeconds;
 	}
+
+	/**
+	 * What {@code --seed} does, in its help and beside the plan: nothing, because no planner part is
+	 * randomized (a seed that changed nothing silently would let a user believe two seeds gave two
+	 * samples). {@code SEED} stands for the seed given.
+	 */
+	static final String SEED_NOTE = "seed SEED changes nothing: the planning engine has no randomized part"
+			+ " (ties are broken by ids, budgets count work), so every seed and every run gives this plan";
 
 	/** True for the time limits {@code --timeout} accepts: positive and finite. */
 	static boolean validTimeout(double seconds) {
@@ -88,6 +103,11 @@ final class SolveRun {
 				String text = r.plan().toPddl();
 				out.print(text);
 				out.flush();
+				if (seed != null) {
+					// printed with the plan: a script that passes a seed learns that it decides nothing
+					err.println("note: " + (engine instanceof org.triad.planner.TriadEngine ? SEED_NOTE.replace("SEED", Long.toString(seed))
+							: "seed " + seed + " is not passed on to the planner named by --planner"));
+				}
 				if (r.isBestSoFar()) {
 					// valid, but not the engine's deterministic answer: a longer --timeout gives that
 					err.println("note: " + r.message() + " (a longer --timeout gives the same plan on every run)");

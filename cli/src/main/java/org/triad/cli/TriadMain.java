@@ -35,7 +35,7 @@ public final class TriadMain {
 				PrintWriter err = new PrintWriter(System.err, true);
 				int exit;
 				try {
-					exit = new SolveRun(a.domain, a.problem, a.plan, engine, a.timeoutSeconds).run(out, err);
+					exit = new SolveRun(a.domain, a.problem, a.plan, engine, a.timeoutSeconds, a.seed).run(out, err);
 				} catch (RuntimeException e) {
 					// as TriadCli's execution exception handler reports it
 					err.println("triad solve: " + FailureMessage.of(e));

@@ -36,9 +36,27 @@ class SolveCommandTest {
 	void helpNamesEveryOption() {
 		Run run = TriadCliTest.run("solve", "--help");
 		assertEquals(0, run.exit(), run.err());
-		for (String option : List.of("DOMAIN", "PROBLEM", "--plan", "--planner", "--timeout")) {
+		for (String option : List.of("DOMAIN", "PROBLEM", "--plan", "--planner", "--timeout", "--seed")) {
 			assertTrue(run.out().contains(option), option + " in " + run.out());
 		}
+		assertTrue(run.out().replaceAll("\\s+", " ").contains("changes nothing: no part of planning is randomized"), run.out());
+	}
+
+	/** Nothing in planning is randomized: a seed is accepted, gives the plan every seed gives, and the note beside it says so. */
+	@Test
+	void aSeedIsAcceptedAndSaidToChangeNothing() {
+		Run none = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--timeout", "20");
+		Run seven = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--timeout", "20", "--seed", "7");
+		Run other = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--seed=123456789", "--timeout", "20");
+		assertEquals(0, seven.exit(), seven.err());
+		assertEquals(none.out(), seven.out());
+		assertEquals(none.out(), other.out());
+		assertEquals("", none.err());
+		assertEquals("note: " + SolveRun.SEED_NOTE.replace("SEED", "7"), seven.err().strip());
+		assertTrue(other.err().startsWith("note: seed 123456789 changes nothing"), other.err());
+		Run bad = TriadCliTest.run("solve", DOMAIN, PROBLEM, "--seed", "x");
+		assertEquals(2, bad.exit(), bad.err());
+		assertTrue(bad.err().contains("--seed"), bad.err());
 	}
 
 	@Test

@@ -98,6 +98,7 @@ class TriadMainTest {
 		answersAsTriadCli("solve", "--help");
 		answersAsTriadCli("solve", DOMAIN);
 		answersAsTriadCli("solve", DOMAIN, PROBLEM, "--timeout", "soon");
+		answersAsTriadCli("solve", DOMAIN, PROBLEM, "--seed", "soon");
 		answersAsTriadCli("solve", DOMAIN, PROBLEM, "--planner", "metric-ff");
 		answersAsTriadCli("solve", DOMAIN, PROBLEM, "--plan=" + dir.resolve("p.txt"));
 		Run unknown = java(cliAndPlanner(), TriadMain.class.getName(), "solve", DOMAIN, PROBLEM, "--fast");
@@ -113,6 +114,14 @@ class TriadMainTest {
 		assertEquals(java(CLASS_PATH, TriadCli.class.getName(), "check", "nowhere"), java(CLASS_PATH, TriadMain.class.getName(), "check", "nowhere"));
 	}
 
+	/** A seed read without picocli answers as picocli's command does: the plan, and the note that the seed changes nothing. */
+	@Test
+	void aSeedIsTheSameNote() throws IOException, InterruptedException {
+		Run run = answersAsTriadCli("solve", DOMAIN, PROBLEM, "--seed", "3", "--timeout", "20");
+		assertEquals(0, run.exit(), run.err());
+		assertTrue(run.err().startsWith("note: seed 3 changes nothing"), run.err());
+	}
+
 	@Test
 	void plainArgumentsAreReadAndTheRestLeftToPicocli() {
 		SolveArguments a = SolveArguments.parse(new String[] { "solve", "d.pddl", "--timeout", "2.5", "p.pddl", "--plan", "out.txt" });
@@ -121,9 +130,12 @@ class TriadMainTest {
 		assertEquals(Path.of("out.txt"), a.plan);
 		assertEquals(2.5, a.timeoutSeconds);
 		assertEquals("triad", a.planner);
+		assertEquals(null, a.seed);
+		assertEquals(5L, SolveArguments.parse(new String[] { "solve", "d.pddl", "p.pddl", "--seed", "5" }).seed);
 		for (String line : List.of("solve d.pddl", "solve d.pddl p.pddl x", "solve -h", "solve d.pddl p.pddl -o", "solve d.pddl p.pddl -o a -o b",
 				"solve @args", "solve d.pddl p.pddl --timeout 0", "solve d.pddl p.pddl --timeout NaN", "solve d.pddl p.pddl --timeout Infinity",
-				"solve -- d.pddl p.pddl", "solve d.pddl p.pddl -oplan.txt", "solve d.pddl p.pddl --plan -x")) {
+				"solve -- d.pddl p.pddl", "solve d.pddl p.pddl -oplan.txt", "solve d.pddl p.pddl --plan -x",
+				"solve d.pddl p.pddl --seed 1.5", "solve d.pddl p.pddl --seed 1 --seed 2")) {
 			assertEquals(null, SolveArguments.parse(line.split(" ")), line);
 		}
 	}
