@@ -162,6 +162,37 @@ class PlanImprovementTest {
         assertTrue(effort[1] > 0, "the lazy search and the restarts count their evaluations");
     }
 
+    /**
+     * A lazy search stopped by its evaluation limit past half way (FF progress) goes on from where it
+     * stopped to the plan an uninterrupted run finds, and the improver, given fewer evaluations than
+     * that search needs, still gets a plan at least as short (logistics00 50-0's case, small).
+     */
+    @Test
+    void aLazySearchStoppedPastHalfWayGoesOnForWhatItsProgressForetells() {
+        Domain d = TestProblems.domain("ipc/logistics00/domain.pddl");
+        Problem p = TestProblems.problem("ipc/logistics00/problogistics-10-0.pddl");
+        GroundedProblem.Query q = new GroundedProblemCache(1).get(d, p).query(p);
+        SearchTask t = q.task();
+        Successors succ = new Successors(t);
+        java.util.function.Supplier<LazyGreedySearch.Run> lazy = () -> new LazyGreedySearch(new AdditiveFfHeuristic(t),
+                new Landmarks(t, q.init(), q.goalPos(), Long.MAX_VALUE, true), succ, Long.MAX_VALUE).start(q.init(), q.goalPos(), q.goalNeg());
+        BestFirstSearch.Result whole = lazy.get().resume(null, Long.MAX_VALUE, Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.FOUND, whole.outcome());
+        long needed = whole.evaluated();
+        LazyGreedySearch.Run part = lazy.get();
+        assertEquals(BestFirstSearch.Outcome.LIMIT, part.resume(null, Long.MAX_VALUE, needed * 9 / 10).outcome());
+        assertTrue(part.progress() >= PlanImprover.LAZY_PROGRESS_TO_EXTEND && part.progress() <= 1, "progress " + part.progress());
+        assertTrue(needed * 9 / 10 / part.progress() * PlanImprover.LAZY_MARGIN >= needed, "its progress foretells the evaluations it needs");
+        assertArrayEquals(whole.plan(), part.resume(null, Long.MAX_VALUE, Long.MAX_VALUE).plan());
+
+        BestFirstSearch.Result first = new BestFirstSearch(t, new FfHeuristic(t), succ, Long.MAX_VALUE)
+                .run(q.init(), q.goalPos(), q.goalNeg(), 0, 1, false, Long.MAX_VALUE);
+        int[] lazyPlan = PlanShortener.shorten(t, succ, q.init(), q.goalPos(), q.goalNeg(), whole.plan());
+        int[] improved = new PlanImprover(t, new FfHeuristic(t), succ, Long.MAX_VALUE, new long[2], needed * 9 / 10, WorkMeter.UNITS_PER_SECOND)
+                .improve(q.init(), q.goalPos(), q.goalNeg(), first.plan(), true);
+        assertTrue(improved.length <= Math.min(lazyPlan.length, first.plan().length), improved.length + " > " + lazyPlan.length);
+    }
+
     @Test
     void improverPastItsDeadlineStillEliminatesRedundantActions() {
         Setup s = roadsSetup("(at c)");
