@@ -284,6 +284,9 @@ public final class SimulatedAgv implements AutoCloseable {
     /** Handles a message; {@code busy} while an order runs (new orders are then rejected, updates appended). */
     private void handle(Received r, boolean busy) {
         if (r.address().topic() == Topic.ORDER) {
+            if (!busy) {
+                carriedByLift();
+            }
             receiveOrder(r.as(Order.class), busy);
         } else if (r.address().topic() == Topic.INSTANT_ACTIONS) {
             for (Action a : r.as(InstantActions.class).actions()) {
@@ -443,6 +446,22 @@ public final class SimulatedAgv implements AutoCloseable {
         log.accept(String.format(Locale.ROOT, "agv %s: order %s finished at %s (%.1f s virtual time)", serial, order, lastNodeId, sim.time()));
         publishState();
         drawPicture();
+    }
+
+    /**
+     * A lift carried the AGV standing in one cabin to the cabin of another floor (the building moved it, not an order):
+     * its last node is now the cabin it stands in, so the next order starts there.
+     */
+    private void carriedByLift() {
+        boolean inCabin = HospitalFloor.LIFT_LANDINGS.stream().anyMatch(l -> l.cabin().equals(lastNodeId));
+        if (!inCabin || driving) {
+            return;
+        }
+        String at = floor.waypointAt(robot.position());
+        if (!at.equals(lastNodeId) && HospitalFloor.LIFT_LANDINGS.stream().anyMatch(l -> l.cabin().equals(at))) {
+            log.accept("agv " + serial + ": carried by the lift from " + lastNodeId + " to " + at);
+            lastNodeId = at;
+        }
     }
 
     private boolean traverse(Edge e) {
