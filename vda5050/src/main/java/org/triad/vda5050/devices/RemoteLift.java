@@ -62,7 +62,8 @@ public final class RemoteLift {
             while (true) {
                 if (state != null && id.equals(state.lastRequestId())) {
                     if (DeviceMessages.FAULT.equals(state.motionState())) {
-                        lastFailure = "lift '" + lift + "': " + (state.reason() != null ? state.reason() : "FAULT");
+                        String why = state.reason() != null ? state.reason() : "FAULT";
+                        lastFailure = why.contains("lift '" + lift + "'") ? why : "lift '" + lift + "': " + why;
                         return false;
                     }
                     if (DeviceMessages.STOPPED.equals(state.motionState()) && Integer.valueOf(floor).equals(state.currentFloor())
@@ -70,7 +71,7 @@ public final class RemoteLift {
                         lastFailure = null;
                         return true;
                     }
-                    if (state.reason() != null && !DeviceMessages.MOVING.equals(state.motionState())) {
+                    if (state.reason() != null) {
                         lastFailure = "lift '" + lift + "' refused floor " + floor + ": " + state.reason();
                         return false;
                     }

@@ -22,15 +22,22 @@ import org.triad.vda5050.devices.DeviceMessages.LiftState;
  * The building's lifts as devices on the broker ({@link DeviceMessages}): a request for a floor is executed on the
  * building's clock (the cabin closes its door, travels and opens at the floor; at the floor already, it opens there).
  * A request that comes while the cabin travels elsewhere waits for it to stop, then is served (in the order they
- * came). The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
+ * came); so does a request to leave while another robot stands in the cabin (it does not carry off a robot that did
+ * not ask, unless that robot stays longer than {@value #DWELL_SECONDS} simulated seconds). The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
  * door changes, naming the request it last acted on; a lift stopped between floors reports FAULT with the reason, and
  * every request that comes then is answered FAULT with it.
  */
 public final class BuildingLifts {
+    /** Simulated seconds a waiting request gives a robot standing in the cabin to leave it. */
+    static final double DWELL_SECONDS = 30;
+
+    private record Waiting(LiftRequest request, double since) {
+    }
+
     private final DeviceLink link;
     private final Map<String, String> lastRequest = new LinkedHashMap<>();
     private final Map<String, LiftState> published = new LinkedHashMap<>();
-    private final Map<String, Deque<LiftRequest>> waiting = new LinkedHashMap<>();
+    private final Map<String, Deque<Waiting>> waiting = new LinkedHashMap<>();
 
     private BuildingLifts(DeviceLink link) {
         this.link = link;
@@ -68,8 +75,9 @@ public final class BuildingLifts {
                     + l.landings().stream().map(Lift.Landing::floor).toList());
             return;
         }
-        if (l.motion() == Lift.Motion.MOVING && !Integer.valueOf(r.destinationFloor()).equals(l.destinationFloor().orElse(null))) {
-            waiting.get(name).add(r);
+        boolean elsewhere = l.motion() == Lift.Motion.MOVING && !Integer.valueOf(r.destinationFloor()).equals(l.destinationFloor().orElse(null));
+        if (elsewhere || !waiting.get(name).isEmpty() || leavesSomeoneBehind(s, l, r)) {
+            waiting.get(name).add(new Waiting(r, s.time()));
             return;
         }
         serve(s, l, r);
@@ -84,9 +92,10 @@ public final class BuildingLifts {
     /** Runs on the clock thread after every step: serves a waiting request once the cabin stopped; publishes changes. */
     private void step(Simulation s) {
         for (Lift l : s.lifts()) {
-            Deque<LiftRequest> q = waiting.get(l.name());
-            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING) {
-                serve(s, l, q.poll());
+            Deque<Waiting> q = waiting.get(l.name());
+            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING
+                    && (!leavesSomeoneBehind(s, l, q.peek().request()) || s.time() - q.peek().since() >= DWELL_SECONDS)) {
+                serve(s, l, q.poll().request());
             }
             LiftState now = state(s, l, published.containsKey(l.name()) ? published.get(l.name()).reason() : null);
             LiftState last = published.get(l.name());
@@ -95,6 +104,15 @@ public final class BuildingLifts {
                 publish(s, l, null);
             }
         }
+    }
+
+    /** Whether serving {@code r} would carry off (or shut in) a robot other than the requester standing in the cabin. */
+    private static boolean leavesSomeoneBehind(Simulation s, Lift l, LiftRequest r) {
+        if (l.motion() != Lift.Motion.STOPPED || l.currentFloor().isEmpty() || l.currentFloor().get() == r.destinationFloor()) {
+            return false;
+        }
+        org.triad.sim.Rect cabin = s.plan().room(l.landing(l.currentFloor().get()).cabinRoom()).bounds();
+        return s.robots().stream().anyMatch(x -> !x.name().equals(r.requester()) && cabin.contains(x.position()));
     }
 
     private LiftState state(Simulation s, Lift l, String reason) {
