@@ -372,12 +372,13 @@ public final class SimulatedAgv implements AutoCloseable {
                 return Optional.of("validationError: edge '" + e.edgeId() + "' does not join nodes " + nodes.get(i).nodeId() + " and "
                         + nodes.get(i + 1).nodeId());
             }
-            if (floor.route(e.startNodeId(), e.endNodeId()).isEmpty()) {
+            boolean ride = e.actions().stream().anyMatch(a -> a.actionType().equals("ride"));
+            if (floor.route(e.startNodeId(), e.endNodeId()).isEmpty() && !ride) {
                 return Optional.of("noRouteError: no corridor from " + e.startNodeId() + " to " + e.endNodeId());
             }
             for (Action a : e.actions()) {
-                if (!List.of("guide", "walk").contains(a.actionType())) {
-                    return Optional.of("validationError: edge action '" + a.actionType() + "' is not supported (guide, walk)");
+                if (!List.of("guide", "walk", "passDoor", "ride").contains(a.actionType())) {
+                    return Optional.of("validationError: edge action '" + a.actionType() + "' is not supported (guide, walk, passDoor, ride)");
                 }
             }
         }
@@ -468,6 +469,16 @@ public final class SimulatedAgv implements AutoCloseable {
         WayPoint src = objects.waypoint(e.startNodeId());
         WayPoint dst = objects.waypoint(e.endNodeId());
         for (Action a : e.actions()) {
+            // the world's devices as edge actions (./triad run --robots vda5050: drives any model this way): the building
+            // this AGV lives in opens the door or brings the lift itself, as the hospital's world binding does over the broker
+            if (a.actionType().equals("passDoor")) {
+                List<String> doors = objects.doors().stream().map(d -> d.name()).toList();
+                return courier.worldActor().passDoor(objects.door(parameter(a, "doorId", doors)), src, dst);
+            }
+            if (a.actionType().equals("ride")) {
+                List<String> lifts = objects.lifts().stream().map(l -> l.name()).toList();
+                return courier.worldActor().ride(objects.lift(parameter(a, "liftId", lifts)), src, dst);
+            }
             String person = parameter(a, "personId", HospitalFloor.PEOPLE.keySet());
             if (a.actionType().equals("guide")) {
                 return courier.robotActor().guide(objects.person(person), src, dst);
