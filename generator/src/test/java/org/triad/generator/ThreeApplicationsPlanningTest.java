@@ -55,7 +55,8 @@ class ThreeApplicationsPlanningTest {
 			"hospital;Shortage;Holds;gauze;Holds(gauze) unreachable: Courier.carries(gauze) needs Building.itemAt(gauze, _):"
 					+ " none in the current state, and no action makes one from what can be reached",
 			"hospital;Morning;IsAt;ward1;IsAt(ward1) unreachable: Courier.loc() == ward1: the actions that could reach it need"
-					+ " Building.adj(_, ward1) (for any reachable _), which the current state lacks",
+					+ " Building.adj(_, ward1) or Building.doorway(pharmacyDoor, _, ward1) or Building.landing(lift, ward1)"
+					+ " (for any reachable _), which the current state lacks",
 			"lab;Bench;Reached;vault;Reached(vault) unreachable: Rover.at() == vault: the actions that could reach it need"
 					+ " LabWorld.linked(_, _, vault) (for any reachable _), which the current state lacks" })
 	void unreachableGoalGivesNoPlanAndSaysWhy(String app, String situation, String goal, String args, String why) {

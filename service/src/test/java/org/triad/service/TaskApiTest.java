@@ -108,7 +108,7 @@ class TaskApiTest {
         JsonNode fields = r.body().get("fields");
         assertEquals("args.i", fields.get(0).get("field").asText());
         assertTrue(fields.get(0).get("message").asText().contains("no object 'scalpel'"), fields.toString());
-        assertTrue(fields.get(0).get("message").asText().contains("[gauze, syringe, bandage]"), fields.toString());
+        assertTrue(fields.get(0).get("message").asText().contains("[gauze, syringe, bandage, insulin]"), fields.toString());
         assertEquals("args.from", fields.get(1).get("field").asText());
         assertTrue(fields.get(1).get("message").asText().contains("'gauze' is a Item, not a Room"), fields.toString());
     }
@@ -176,8 +176,9 @@ class TaskApiTest {
         }
         Schema<?> fetchArgs = (Schema<?>) api.getComponents().getSchemas().get("Task.Fetch").getProperties().get("args");
         assertEquals(java.util.Set.of("i", "from", "to"), java.util.Set.copyOf(fetchArgs.getRequired()));
-        assertEquals(List.of("gauze", "syringe", "bandage"), ((Schema<?>) fetchArgs.getProperties().get("i")).getEnum());
-        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby"), ((Schema<?>) fetchArgs.getProperties().get("to")).getEnum());
+        assertEquals(List.of("gauze", "syringe", "bandage", "insulin"), ((Schema<?>) fetchArgs.getProperties().get("i")).getEnum());
+        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby", "pharmacy", "ward4", "ward5"),
+                ((Schema<?>) fetchArgs.getProperties().get("to")).getEnum());
         assertEquals(7, ((ComposedSchema) api.getComponents().getSchemas().get("TaskSubmission")).getOneOf().size());
         assertTrue(api.getPaths().get("/api/tasks").getPost() != null);
     }

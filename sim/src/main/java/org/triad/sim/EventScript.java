@@ -47,6 +47,13 @@ public final class EventScript {
         return this;
     }
 
+    /** A lift fault: the lift stops between floors on its current or next ride (see {@link Simulation#breakLift}). */
+    public EventScript breakLift(String lift) {
+        sim.lift(lift);
+        sim.schedule(time, "break lift " + lift, () -> sim.breakLift(lift));
+        return this;
+    }
+
     /** Removes the item from the world (also from a robot carrying it). */
     public EventScript removeItem(String item) {
         sim.item(item);

@@ -34,6 +34,7 @@ public final class Simulation {
     private final List<Robot> robots = new ArrayList<>();
     private final List<Person> people = new ArrayList<>();
     private final Map<String, Door> doors = new LinkedHashMap<>();
+    private final Map<String, Lift> lifts = new LinkedHashMap<>();
     private final Map<String, Item> items = new LinkedHashMap<>();
     private final PriorityQueue<Scheduled> events = new PriorityQueue<>();
     private final Trace trace = new Trace();
@@ -389,6 +390,91 @@ public final class Simulation {
         }
     }
 
+    /**
+     * Adds a lift whose cabin rooms and landing doors are in the floor plan; it starts standing at {@code startFloor}
+     * with that landing's door open and every other landing door closed.
+     *
+     * @param secondsPerFloor virtual seconds of travel per floor (&gt; 0), after the door has closed
+     * @throws IllegalArgumentException for a duplicate name, fewer than two landings, two landings of one floor, an
+     *                                  unknown cabin room or door, or a start floor the lift does not serve
+     */
+    public Lift addLift(String name, List<Lift.Landing> landings, double secondsPerFloor, int startFloor) {
+        Checks.notNull("lift name", name);
+        Checks.notNull("landings", landings);
+        Checks.positive("seconds per floor", secondsPerFloor);
+        if (lifts.containsKey(name)) {
+            throw new IllegalArgumentException("duplicate lift '" + name + "'");
+        }
+        if (landings.size() < 2) {
+            throw new IllegalArgumentException("lift '" + name + "' needs at least two landings, not " + landings.size());
+        }
+        java.util.Set<Integer> floors = new java.util.HashSet<>();
+        for (Lift.Landing l : landings) {
+            if (!floors.add(l.floor())) {
+                throw new IllegalArgumentException("lift '" + name + "' has two landings on floor " + l.floor());
+            }
+            plan.room(l.cabinRoom());
+            door(l.door());
+        }
+        Lift lift = new Lift(name, landings, secondsPerFloor, startFloor);
+        lift.landing(startFloor);
+        for (Lift.Landing l : landings) {
+            if (l.floor() == startFloor) {
+                openDoor(l.door());
+            } else {
+                closeDoor(l.door());
+            }
+        }
+        lifts.put(name, lift);
+        return lift;
+    }
+
+    /** @throws IllegalArgumentException for an unknown name */
+    public Lift lift(String name) {
+        Lift l = name == null ? null : lifts.get(name);
+        if (l == null) {
+            throw new IllegalArgumentException("unknown lift '" + name + "'; known: " + lifts.keySet());
+        }
+        return l;
+    }
+
+    public List<Lift> lifts() {
+        return List.copyOf(lifts.values());
+    }
+
+    /**
+     * Calls the lift to {@code floor}: at that floor already, its door opens; else it closes its door, travels and
+     * opens at {@code floor} (see {@link Lift}).
+     *
+     * @return empty when accepted, else why the lift refuses (stopped between floors, on its way elsewhere)
+     * @throws IllegalArgumentException for an unknown lift or a floor it does not serve
+     */
+    public java.util.Optional<String> requestLift(String name, int floor) {
+        return java.util.Optional.ofNullable(lift(name).request(this, floor));
+    }
+
+    /** A fault: the lift stops between floors on its current or next ride, until {@link #repairLift}. */
+    public void breakLift(String name) {
+        lift(name).breakDown();
+    }
+
+    /** Ends a fault: a cabin stopped between floors returns to the floor it left and opens there. */
+    public void repairLift(String name) {
+        lift(name).repair(this);
+    }
+
+    /** Moves every agent standing in {@code from} to the same spot of {@code to} (a lift's ride), at rest. */
+    void carryAcross(Rect from, Rect to) {
+        double dx = to.minX() - from.minX();
+        double dy = to.minY() - from.minY();
+        for (Agent a : agents) {
+            if (from.contains(a.position())) {
+                a.body.translate(dx, dy);
+                a.body.setLinearVelocity(0, 0);
+            }
+        }
+    }
+
     public void lockDoor(String name, boolean locked) {
         door(name).setLocked(locked);
     }
@@ -481,6 +567,9 @@ public final class Simulation {
             }
             for (Door d : doors.values()) {
                 updateDoor(d);
+            }
+            for (Lift l : lifts.values()) {
+                l.update(this);
             }
             for (Agent a : agents) {
                 a.control(dt);

@@ -56,6 +56,7 @@ public final class HospitalBuilding {
             throw new IllegalArgumentException("a building needs at least one courier");
         }
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
+        floor.equip(sim);
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
         sim.addDock(DOCK, floor.plan().waypoint(DOCK).position());

@@ -79,15 +79,28 @@ public final class HospitalDemo implements Callable<Integer> {
 			}
 		});
 		HospitalRun run = hospital.run(task, status -> w.println(line(hospital, describe(hospital, status))));
+		// then upstairs: the pharmacy's door and the lift, world actions the building executes (both floors in the pictures)
+		TaskInstance upstairs = new CollectAndDeliver(hospital.objects().item("insulin"), hospital.objects().room("pharmacy"),
+				hospital.objects().room("ward4"));
+		HospitalRun second = null;
+		if (run.completed()) {
+			w.println(line(hospital, "then " + upstairs.describe() + ": from the pharmacy on floor 0 to ward 4 on floor 1, by the lift"));
+			second = hospital.run(upstairs, status -> w.println(line(hospital, describe(hospital, status))));
+		}
 		List<Path> pictures = hospital.writePictures(out, "delivery");
 		w.printf(Locale.ROOT, "%s after %.1f s of simulated time (%.1f s wall clock, %.0fx real time)%n",
 				run.completed() ? "Completed" : "Aborted", run.simSeconds(), run.wallSeconds(), run.realTimeFactor());
 		w.println("gauze is now in " + hospital.sim().item("gauze").room().map(r -> r.name()).orElse("no room"));
+		if (second != null) {
+			w.printf(Locale.ROOT, "%s: insulin is now in %s (%.1f s of simulated time, floor 1 drawn east of floor 0)%n",
+					second.completed() ? "Completed" : "Aborted", hospital.sim().item("insulin").room().map(r -> r.name()).orElse("no room"),
+					second.simSeconds());
+		}
 		w.println("Pictures written to " + out.toAbsolutePath().normalize() + ":");
 		w.println("  " + pictures.get(0).getFileName() + "   the trajectory with numbered action markers");
 		w.println("  " + pictures.get(1).getFileName() + "   an animated replay");
 		w.println("  " + pictures.get(2).getFileName() + "  a replay to open in a browser");
-		return run.completed() ? 0 : 1;
+		return run.completed() && second != null && second.completed() ? 0 : 1;
 	}
 
 	private static String describe(HospitalSimulation hospital, Status status) {

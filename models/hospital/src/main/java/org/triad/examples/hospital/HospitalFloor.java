@@ -18,6 +18,13 @@ import org.triad.sim.Vec2;
  * storage, x-ray and ward 1 north of c1, c2, c3 and the lobby, ward 3 and ward 2 south of c4, c5, c6.
  * The north corridor has a fire door {@value #FIRE_DOOR} between c2 and c3.
  *
+ * <p>Two floors, laid side by side in the plane so that their bodies never touch (one dyn4j world holds both):
+ * floor 0 is the ring above, with the pharmacy west of the west corridor (its door {@value #PHARMACY_DOOR} is closed
+ * and opened by the building on request, from waypoint c0) and the lift's floor-0 cabin ({@code lift0}) east of the
+ * east corridor (landing c7). Floor 1 lies 8 m east of floor 0's lift: the floor-1 cabin ({@code lift1}), a corridor
+ * d1-d2 and ward 4 (north) and ward 5 (south) off d2. The lift {@value #LIFT} carries whoever stands in one cabin to
+ * the same spot of the other in {@value #LIFT_SECONDS_PER_FLOOR} simulated seconds (see {@link org.triad.sim.Lift}).
+ *
  * <p>Every model edge ({@code Building.adj}) is a fixed route of simulator waypoints: straight for most,
  * round the corners (waypoints {@code nw, sw, ne, se}) for the side corridors. Waypoint names equal the
  * model's object names.
@@ -25,12 +32,34 @@ import org.triad.sim.Vec2;
 public final class HospitalFloor {
     /** The door between c2 and c3 that the fault scenarios close. */
     public static final String FIRE_DOOR = "fireDoor";
-    /** Corridor waypoints of the model, in declaration order. */
-    public static final List<String> CORRIDOR_WAYPOINTS = List.of("c1", "c2", "c3", "c4", "c5", "c6");
+    /** The pharmacy's door: closed, the building opens it on request ({@code Building.passDoor}). */
+    public static final String PHARMACY_DOOR = "pharmacyDoor";
+    /** The lift between floor 0 (landing c7, cabin lift0) and floor 1 (landing d1, cabin lift1). */
+    public static final String LIFT = "lift";
+    /** Simulated seconds the lift travels per floor, once its door has closed. */
+    public static final double LIFT_SECONDS_PER_FLOOR = 8;
+    /** Corridor waypoints of the model, in declaration order (floor 0, then the lift's cabins, then floor 1). */
+    public static final List<String> CORRIDOR_WAYPOINTS = List.of("c1", "c2", "c3", "c4", "c5", "c6", "c0", "c7", "lift0", "lift1", "d1", "d2");
     /** Rooms of the model, in declaration order. */
-    public static final List<String> ROOMS = List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby");
-    /** Items of the model, all in storage at the start. */
-    public static final List<String> ITEMS = List.of("gauze", "syringe", "bandage");
+    public static final List<String> ROOMS = List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby", "pharmacy", "ward4", "ward5");
+    /** Items of the model with the room each lies in at the start. */
+    public static final Map<String, String> ITEM_ROOMS = orderedMap(List.of("gauze", "syringe", "bandage", "insulin"),
+            List.of("storage", "storage", "storage", "pharmacy"));
+    /** Items of the model. */
+    public static final List<String> ITEMS = List.copyOf(ITEM_ROOMS.keySet());
+    /** The floor of every model waypoint that is not on floor 0. */
+    public static final Map<String, Integer> UPPER_FLOOR_WAYPOINTS = Map.of("lift1", 1, "d1", 1, "d2", 1, "ward4", 1, "ward5", 1);
+    /** A lift's landing: the model waypoint before its door on a floor, and the cabin's waypoint (and room) there. */
+    public record LiftLanding(String lift, int floor, String landing, String cabin, String door) {
+    }
+    /** The lift's landings, floor 0 first. */
+    public static final List<LiftLanding> LIFT_LANDINGS = List.of(new LiftLanding(LIFT, 0, "c7", "lift0", "liftDoor0"),
+            new LiftLanding(LIFT, 1, "d1", "lift1", "liftDoor1"));
+    /** A door the building opens on request: its name and the model waypoints on either side. */
+    public record ControlledDoor(String door, String a, String b) {
+    }
+    /** The doors the building opens on request ({@code Building.doorway} facts, both ways). */
+    public static final List<ControlledDoor> CONTROLLED_DOORS = List.of(new ControlledDoor(PHARMACY_DOOR, "c0", "pharmacy"));
     /** People of the model with where they stand at the start (Alice a visitor, Bob a patient). */
     public static final Map<String, Vec2> PEOPLE = orderedMap("alice", new Vec2(5.6, 2.0), "bob", new Vec2(21.2, 3.4));
     /** Walking speeds, m/s: Bob, a patient, walks slower than the robot drives, so it can keep up with him round corners. */
@@ -45,6 +74,8 @@ public final class HospitalFloor {
 
     private final FloorPlan plan;
     private final Map<List<String>, List<String>> routes = new LinkedHashMap<>();
+    /** Model edges the building must help with (through a controlled door, into or out of a lift's cabin): not corridors. */
+    private final java.util.Set<List<String>> passages = new java.util.HashSet<>();
 
     /** A room off the ring: its corridor waypoint, its door's centre (m) and whether it lies north of the ring. */
     private record RoomSpec(String name, String corridorWaypoint, String corridor, double x0, double x1, boolean north) {
@@ -91,7 +122,74 @@ public final class HospitalFloor {
         route(b, "c5", "c6");
         route(b, "c1", "nw", "sw", "c4");
         route(b, "c3", "ne", "se", "c6");
+        // floor 0: the pharmacy west of the west corridor behind a controlled door, the lift's cabin east of the east corridor
+        b.room("pharmacy", -8, 7.4, 0, 13).door(PHARMACY_DOOR, "pharmacy", "westCorridor", 0, 10.2, 1.4)
+                .waypoint("pharmacy", -4, 10.2).waypoint("c0", 1.2, 10.2).waypoint("c7", 22.8, 10.2)
+                .room("lift0", 24, 8.7, 27, 11.7).door("liftDoor0", "eastCorridor", "lift0", 24, 10.2, 1.6).waypoint("lift0", 25.5, 10.2);
+        b.item("insulin", -5.5, 11.8);
+        route(b, "c1", "nw", "c0");
+        route(b, "c0", "sw", "c4");
+        route(b, "c3", "ne", "c7");
+        route(b, "c7", "se", "c6");
+        passage(b, "c0", "pharmacy");
+        passage(b, "c7", "lift0");
+        // floor 1, 8 m east of floor 0's cabin
+        b.room("lift1", 35, 8.7, 38, 11.7).corridor("floor1Corridor", 38, 9, 54, 11.4)
+                .door("liftDoor1", "lift1", "floor1Corridor", 38, 10.2, 1.6).waypoint("lift1", 36.5, 10.2)
+                .waypoint("d1", 39.4, 10.2).waypoint("d2", 47, 10.2)
+                .room("ward4", 43, 11.4, 51, 16.4).door("ward4Door", "ward4", "floor1Corridor", 47, 11.4).waypoint("ward4", 47, 13.9)
+                .room("ward5", 43, 4, 51, 9).door("ward5Door", "ward5", "floor1Corridor", 47, 9).waypoint("ward5", 47, 6.5);
+        route(b, "d1", "d2");
+        route(b, "ward4", "d2");
+        route(b, "ward5", "d2");
+        passage(b, "lift1", "d1");
         this.plan = b.build();
+    }
+
+    /** A model edge through a controlled door or a lift's door: drivable when the building has opened it, not a corridor. */
+    private void passage(FloorPlan.Builder b, String a, String z) {
+        route(b, a, z);
+        passages.add(List.of(a, z));
+        passages.add(List.of(z, a));
+    }
+
+    /** Puts the building's devices into the simulation: the lift (standing at floor 0) and the controlled doors, closed. */
+    public void equip(org.triad.sim.Simulation sim) {
+        List<org.triad.sim.Lift.Landing> landings = new ArrayList<>();
+        for (LiftLanding l : LIFT_LANDINGS) {
+            landings.add(new org.triad.sim.Lift.Landing(l.floor(), l.cabin(), l.door()));
+        }
+        sim.addLift(LIFT, landings, LIFT_SECONDS_PER_FLOOR, 0);
+        for (ControlledDoor d : CONTROLLED_DOORS) {
+            sim.closeDoor(d.door());
+        }
+    }
+
+    /** The floor of a model waypoint (0 or 1). */
+    public static int floorOf(String waypoint) {
+        return UPPER_FLOOR_WAYPOINTS.getOrDefault(waypoint, 0);
+    }
+
+    /** Whether a model edge is a corridor ({@code Building.adj}): it has a route and needs no door or lift opened by the building. */
+    public boolean isCorridor(String src, String dst) {
+        return routes.containsKey(List.of(src, dst)) && !passages.contains(List.of(src, dst));
+    }
+
+    /** The lift landing whose landing waypoint is {@code waypoint}, if any. */
+    public static Optional<LiftLanding> liftLandingAt(String waypoint) {
+        return LIFT_LANDINGS.stream().filter(l -> l.landing().equals(waypoint)).findFirst();
+    }
+
+    /** The landing of {@code lift} on {@code floor}. */
+    public static LiftLanding liftLanding(String lift, int floor) {
+        return LIFT_LANDINGS.stream().filter(l -> l.lift().equals(lift) && l.floor() == floor).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("lift '" + lift + "' has no landing on floor " + floor));
+    }
+
+    /** The controlled door between two model waypoints, if any. */
+    public static Optional<String> controlledDoor(String a, String b) {
+        return CONTROLLED_DOORS.stream().filter(d -> d.a().equals(a) && d.b().equals(b) || d.a().equals(b) && d.b().equals(a))
+                .map(ControlledDoor::door).findFirst();
     }
 
     private void route(FloorPlan.Builder b, String... via) {
@@ -116,7 +214,10 @@ public final class HospitalFloor {
         return all;
     }
 
-    /** The simulator waypoints from {@code src} to {@code dst} for a model edge, or empty if the model has no such edge. */
+    /**
+     * The simulator waypoints from {@code src} to {@code dst} for a model edge, or empty if the model has no such edge. Door
+     * and lift passages have routes too (the robot drives them once the building opened the door): see {@link #isCorridor}.
+     */
     public Optional<List<String>> route(String src, String dst) {
         return Optional.ofNullable(routes.get(List.of(src, dst)));
     }
@@ -133,9 +234,10 @@ public final class HospitalFloor {
         return doors;
     }
 
-    /** The model waypoint a position belongs to: the room it lies in, else the nearest corridor waypoint. */
+    /** The model waypoint a position belongs to: the room (or lift cabin) it lies in, else the nearest corridor waypoint. */
     public String waypointAt(Vec2 p) {
-        Optional<String> room = plan.roomAt(p).map(Room::name).filter(ROOMS::contains);
+        Optional<String> room = plan.roomAt(p).map(Room::name)
+                .filter(r -> ROOMS.contains(r) || LIFT_LANDINGS.stream().anyMatch(l -> l.cabin().equals(r)));
         if (room.isPresent()) {
             return room.get();
         }
@@ -160,6 +262,14 @@ public final class HospitalFloor {
             return known;
         }
         return waypointAt(p);
+    }
+
+    private static Map<String, String> orderedMap(List<String> keys, List<String> values) {
+        Map<String, String> m = new LinkedHashMap<>();
+        for (int i = 0; i < keys.size(); i++) {
+            m.put(keys.get(i), values.get(i));
+        }
+        return Collections.unmodifiableMap(m);
     }
 
     private static Map<String, Vec2> orderedMap(String k1, Vec2 v1, String k2, Vec2 v2) {

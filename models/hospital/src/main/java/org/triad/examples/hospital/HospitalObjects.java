@@ -5,7 +5,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import generated.hospital.domain.Door;
 import generated.hospital.domain.Item;
+import generated.hospital.domain.Lift;
 import generated.hospital.domain.Person;
 import generated.hospital.domain.Room;
 import generated.hospital.domain.WayPoint;
@@ -19,6 +21,8 @@ public final class HospitalObjects {
     private final Map<String, Room> rooms = new LinkedHashMap<>();
     private final Map<String, Item> items = new LinkedHashMap<>();
     private final Map<String, Person> people = new LinkedHashMap<>();
+    private final Map<String, Door> doors = new LinkedHashMap<>();
+    private final Map<String, Lift> lifts = new LinkedHashMap<>();
 
     public HospitalObjects() {
         HospitalFloor.CORRIDOR_WAYPOINTS.forEach(n -> wayPoints.put(n, new WayPoint(n)));
@@ -28,11 +32,17 @@ public final class HospitalObjects {
         room("ward2", "Ward 2");
         room("ward3", "Ward 3");
         room("lobby", "Lobby");
+        room("pharmacy", "Pharmacy");
+        room("ward4", "Ward 4");
+        room("ward5", "Ward 5");
         item("gauze", 1);
         item("syringe", 1);
         item("bandage", 2);
+        item("insulin", 1);
         person("alice", "Alice");
         person("bob", "Bob");
+        HospitalFloor.CONTROLLED_DOORS.forEach(d -> doors.put(d.door(), new Door(d.door())));
+        lifts.put(HospitalFloor.LIFT, new Lift(HospitalFloor.LIFT));
     }
 
     private void room(String id, String label) {
@@ -74,6 +84,23 @@ public final class HospitalObjects {
 
     public Person person(String name) {
         return require(people, name, "person");
+    }
+
+    public Door door(String name) {
+        return require(doors, name, "door");
+    }
+
+    public Lift lift(String name) {
+        return require(lifts, name, "lift");
+    }
+
+    /** The doors the building opens on request. */
+    public List<Door> doors() {
+        return List.copyOf(doors.values());
+    }
+
+    public List<Lift> lifts() {
+        return List.copyOf(lifts.values());
     }
 
     /** Plain waypoints (corridors), without rooms. */

@@ -57,6 +57,7 @@ public final class HospitalSimulation {
      */
     public HospitalSimulation(long seed, boolean recordTrace) {
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
+        floor.equip(sim);
         Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, RobotSpec.defaults());
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));

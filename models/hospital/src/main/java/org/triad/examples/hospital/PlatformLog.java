@@ -41,6 +41,11 @@ public final class PlatformLog {
         add(new Entry(time, time, call, false, "REFUSED", why));
     }
 
+    /** A call that the building could not carry out, e.g. {@code LIFT_FAULT} for a lift stopped between floors. */
+    void failed(double time, String call, String failure, String why) {
+        add(new Entry(time, time, call, false, failure, why));
+    }
+
     private void add(Entry e) {
         entries.add(e);
         observers.forEach(o -> o.accept(e));

@@ -10,7 +10,9 @@ import org.triad.sim.Robot;
 import org.triad.sim.Simulation;
 
 import generated.hospital.IWorld;
+import generated.hospital.domain.Door;
 import generated.hospital.domain.Item;
+import generated.hospital.domain.Lift;
 import generated.hospital.domain.Room;
 import generated.hospital.domain.WayPoint;
 
@@ -25,6 +27,8 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
     public static final double FOLLOW_MAX = 2.5;
     /** Virtual seconds a person may take to walk one corridor segment. */
     static final double WALK_TIMEOUT = 120;
+    /** Simulated seconds the robot waits for the lift to stand at its floor with the door open. */
+    static final double LIFT_TIMEOUT = 180;
 
     private final HospitalFloor floor;
     private final HospitalObjects objects;
@@ -43,11 +47,11 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         this.log = Objects.requireNonNull(log, "log");
     }
 
-    /** The model has the edge and the robot knows of no closed door on it. */
+    /** The model has the edge, a corridor (not a passage the building opens), and the robot knows of no closed door on it. */
     @Override
     public boolean adj(WayPoint a, WayPoint b) {
         Optional<List<String>> route = floor.route(a.name(), b.name());
-        if (route.isEmpty()) {
+        if (route.isEmpty() || !floor.isCorridor(a.name(), b.name())) {
             return false;
         }
         Robot robot = courier.robot();
@@ -97,6 +101,128 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         whereabouts.arrived(p.name(), dst.name());
         whereabouts.arrived(courier.robot().name(), dst.name());
         return true;
+    }
+
+    @Override
+    public boolean doorway(Door d, WayPoint a, WayPoint b) {
+        return HospitalFloor.controlledDoor(a.name(), b.name()).map(d.name()::equals).orElse(false);
+    }
+
+    @Override
+    public boolean landing(Lift l, WayPoint w) {
+        return HospitalFloor.liftLandingAt(w.name()).map(x -> x.lift().equals(l.name())).orElse(false);
+    }
+
+    /**
+     * The building opens the door (unless it is locked), the robot drives through, and the building closes the door
+     * behind it (once the doorway is clear).
+     */
+    @Override
+    public boolean passDoor(Door d, WayPoint src, WayPoint dst) {
+        String call = "passDoor(" + d + ", " + src + ", " + dst + ")";
+        if (!doorway(d, src, dst)) {
+            log.refused(sim.time(), call, "door '" + d + "' does not join " + src + " and " + dst);
+            return false;
+        }
+        String refusal = onSim(s -> {
+            if (s.door(d.name()).isLocked()) {
+                return "door '" + d + "' is locked";
+            }
+            s.openDoor(d.name());
+            return null;
+        });
+        if (refusal != null) {
+            log.refused(sim.time(), call, refusal);
+            return false;
+        }
+        look();
+        boolean through = courier.move(src, dst);
+        onSim(s -> {
+            s.closeDoor(d.name());
+            return null;
+        });
+        return through;
+    }
+
+    /**
+     * The lift's ride from the landing {@code src} to the landing {@code dst}: the building calls the cabin to src's floor,
+     * the robot drives in, the cabin carries it to dst's floor, the robot drives out to dst. Fails with the lift's
+     * reason when it stops between floors, or when it does not come within {@value #LIFT_TIMEOUT} simulated seconds.
+     */
+    @Override
+    public boolean ride(Lift l, WayPoint src, WayPoint dst) {
+        String call = "ride(" + l + ", " + src + ", " + dst + ")";
+        Optional<HospitalFloor.LiftLanding> from = HospitalFloor.liftLandingAt(src.name()).filter(x -> x.lift().equals(l.name()));
+        Optional<HospitalFloor.LiftLanding> to = HospitalFloor.liftLandingAt(dst.name()).filter(x -> x.lift().equals(l.name()));
+        if (from.isEmpty() || to.isEmpty() || from.get().floor() == to.get().floor()) {
+            log.refused(sim.time(), call, src + " and " + dst + " are not landings of lift '" + l + "' on two floors");
+            return false;
+        }
+        if (!courier.loc().equals(src)) {
+            log.refused(sim.time(), call, "the robot is at " + courier.loc() + ", not " + src);
+            return false;
+        }
+        return callLift(call, l.name(), from.get().floor()) && look() && courier.move(src, objects.waypoint(from.get().cabin()))
+                && callLift(call, l.name(), to.get().floor()) && look() && courier.move(objects.waypoint(to.get().cabin()), dst);
+    }
+
+    /** Calls the lift to the floor and waits (simulated time) until it stands there with its door open. */
+    private boolean callLift(String call, String lift, int floorNumber) {
+        double deadline = sim.time() + LIFT_TIMEOUT;
+        while (true) {
+            String[] outcome = new String[1];
+            boolean there = onSim(s -> {
+                org.triad.sim.Lift x = s.lift(lift);
+                if (x.motion() == org.triad.sim.Lift.Motion.FAULT) {
+                    outcome[0] = x.fault().orElse("lift '" + lift + "' is out of order");
+                    return false;
+                }
+                if (x.motion() == org.triad.sim.Lift.Motion.STOPPED && x.currentFloor().equals(Optional.of(floorNumber))
+                        && s.door(x.landing(floorNumber).door()).isOpen()) {
+                    return true;
+                }
+                Optional<String> refused = s.requestLift(lift, floorNumber);
+                if (refused.isPresent() && x.motion() != org.triad.sim.Lift.Motion.MOVING) {
+                    outcome[0] = refused.get();
+                }
+                return false;
+            });
+            if (there) {
+                return true;
+            }
+            if (outcome[0] != null) {
+                log.failed(sim.time(), call, "LIFT_FAULT", outcome[0]);
+                return false;
+            }
+            if (sim.time() >= deadline) {
+                log.failed(sim.time(), call, "LIFT_TIMEOUT", String.format(java.util.Locale.ROOT, "lift '%s' did not come to floor %d within %.0f s",
+                        lift, floorNumber, LIFT_TIMEOUT));
+                return false;
+            }
+            courier.robot().waitFor(0.5);
+        }
+    }
+
+    /** The robot stands still a moment, long enough to see a door that was opened in front of it. */
+    private boolean look() {
+        courier.robot().waitFor(0.3);
+        return true;
+    }
+
+    /** Runs a world change on the simulation: through its clock when one steps it, else here. */
+    private <T> T onSim(java.util.function.Function<Simulation, T> change) {
+        Optional<org.triad.sim.SimulationClock> clock = sim.clock();
+        return clock.isPresent() ? clock.get().call(change) : change.apply(sim);
+    }
+
+    @Override
+    public List<Door> doors() {
+        return objects.doors();
+    }
+
+    @Override
+    public List<Lift> lifts() {
+        return objects.lifts();
     }
 
     @Override

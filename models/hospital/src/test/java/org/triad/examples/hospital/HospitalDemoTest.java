@@ -29,6 +29,8 @@ class HospitalDemoTest {
 		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
 		assertTrue(lines.contains("gauze is now in ward1"), out::toString);
+		assertTrue(lines.stream().anyMatch(l -> l.contains("action Building.ride(lift, c7, d1) succeeded")), out::toString);
+		assertTrue(lines.stream().anyMatch(l -> l.startsWith("Completed: insulin is now in ward4")), out::toString);
 		assertTrue(lines.contains("Pictures written to " + dir.toAbsolutePath().normalize() + ":"), out::toString);
 		for (String picture : List.of("delivery.png", "delivery.gif", "delivery.html")) {
 			assertTrue(Files.size(dir.resolve(picture)) > 1000, picture);

@@ -40,7 +40,10 @@ class HospitalFloorTest {
         assertEquals("lobby", floor.waypointAt(new Vec2(7, 1)));
         assertEquals("c2", floor.waypointAt(new Vec2(14.5, 14)));
         assertEquals("c3", floor.waypointAt(new Vec2(17, 14)));
-        assertEquals("c4", floor.waypointAt(new Vec2(1.2, 9)), "the west corridor near its south end");
+        assertEquals("c4", floor.waypointAt(new Vec2(2, 7)), "the west corridor at its south end");
+        assertEquals("c0", floor.waypointAt(new Vec2(1.2, 9.5)), "the west corridor before the pharmacy's door");
+        assertEquals("lift1", floor.waypointAt(new Vec2(36, 10)), "the lift's cabin on floor 1");
+        assertEquals("d2", floor.waypointAt(new Vec2(46, 10)), "floor 1's corridor");
         // someone brought to c4 and waiting in the lobby's doorway is still at c4; further away, in the lobby
         assertEquals("c4", floor.waypointAt(new Vec2(4, 4.8), "c4"));
         assertEquals("lobby", floor.waypointAt(new Vec2(4, 4.8), null));

@@ -91,11 +91,55 @@ class SimulatedCourierTest {
 
     @Test
     void theWorldListsTheModelsObjects() {
-        assertEquals(List.of("c1", "c2", "c3", "c4", "c5", "c6"), building.wayPoints().stream().map(w -> w.name()).toList());
-        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby"), building.rooms().stream().map(r -> r.name()).toList());
-        assertEquals(List.of("gauze", "syringe", "bandage"), building.items().stream().map(i -> i.name()).toList());
+        assertEquals(List.of("c1", "c2", "c3", "c4", "c5", "c6", "c0", "c7", "lift0", "lift1", "d1", "d2"),
+                building.wayPoints().stream().map(w -> w.name()).toList());
+        assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby", "pharmacy", "ward4", "ward5"),
+                building.rooms().stream().map(r -> r.name()).toList());
+        assertEquals(List.of("gauze", "syringe", "bandage", "insulin"), building.items().stream().map(i -> i.name()).toList());
+        assertEquals(List.of("pharmacyDoor"), building.doors().stream().map(d -> d.name()).toList());
+        assertEquals(List.of("lift"), building.lifts().stream().map(l -> l.name()).toList());
         assertEquals(List.of("alice", "bob"), building.persons().stream().map(p -> p.name()).toList());
         assertEquals("X-ray", o.room("xray").getName());
+    }
+
+    @Test
+    void theBuildingOpensThePharmacyDoorAndTheLiftCarriesTheRobotToFloorOne() {
+        assertFalse(building.adj(o.waypoint("c0"), o.room("pharmacy")), "a doorway, not a corridor");
+        assertTrue(building.doorway(o.door("pharmacyDoor"), o.waypoint("c0"), o.room("pharmacy")));
+        assertTrue(building.landing(o.lift("lift"), o.waypoint("c7")) && building.landing(o.lift("lift"), o.waypoint("d1")));
+        assertFalse(h.sim().door("pharmacyDoor").isOpen(), "closed until the building opens it");
+        for (String[] leg : new String[][] { {"lobby", "c4"}, {"c4", "c0"} }) {
+            assertTrue(courier.move(o.waypoint(leg[0]), o.waypoint(leg[1])));
+        }
+        assertTrue(building.passDoor(o.door("pharmacyDoor"), o.waypoint("c0"), o.room("pharmacy")), h.platformLog().entries().toString());
+        assertTrue(courier.pick(o.item("insulin"), o.room("pharmacy")));
+        assertTrue(building.passDoor(o.door("pharmacyDoor"), o.room("pharmacy"), o.waypoint("c0")), h.platformLog().entries().toString());
+        h.sim().runFor(5);
+        assertFalse(h.sim().door("pharmacyDoor").isOpen(), "closed again behind the robot");
+        for (String[] leg : new String[][] { {"c0", "c1"}, {"c1", "c2"}, {"c2", "c3"}, {"c3", "c7"} }) {
+            assertTrue(courier.move(o.waypoint(leg[0]), o.waypoint(leg[1])));
+        }
+        double before = h.sim().time();
+        assertTrue(building.ride(o.lift("lift"), o.waypoint("c7"), o.waypoint("d1")), h.platformLog().entries().toString());
+        assertTrue(h.sim().time() - before >= HospitalFloor.LIFT_SECONDS_PER_FLOOR, "the ride takes the lift's travel time");
+        assertEquals(o.waypoint("d1"), courier.loc());
+        assertEquals(1, HospitalFloor.floorOf(courier.loc().name()));
+        assertTrue(courier.carries(o.item("insulin")), "what the robot carries rides with it");
+        assertTrue(courier.move(o.waypoint("d1"), o.waypoint("d2")) && courier.move(o.waypoint("d2"), o.room("ward4")));
+        assertTrue(courier.drop(o.item("insulin"), o.room("ward4")));
+        assertTrue(building.itemAt(o.item("insulin"), o.room("ward4")));
+    }
+
+    @Test
+    void aLiftThatStopsBetweenFloorsFailsTheRideWithTheReason() {
+        h.sim().breakLift(HospitalFloor.LIFT);
+        assertFalse(building.ride(o.lift("lift"), o.waypoint("c7"), o.waypoint("d1")), "not at c7");
+        for (String[] leg : new String[][] { {"lobby", "c4"}, {"c4", "c5"}, {"c5", "c6"}, {"c6", "c7"} }) {
+            assertTrue(courier.move(o.waypoint(leg[0]), o.waypoint(leg[1])));
+        }
+        assertFalse(building.ride(o.lift("lift"), o.waypoint("c7"), o.waypoint("d1")));
+        assertEquals("LIFT_FAULT: lift 'lift' stopped between floors 0 and 1", h.platformLog().lastFailure().orElseThrow());
+        assertEquals(o.waypoint("lift0"), courier.loc(), "stuck in the cabin it entered on floor 0");
     }
 
     private PlatformLog.Entry last() {

@@ -232,9 +232,11 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         private final Runnable onClose;
 
         private final RemoteAgv agv;
+        private final VdaHospital hospital;
 
         Courier(String name, VdaHospital agv, Runnable onClose) {
             this.name = name;
+            this.hospital = agv;
             this.onClose = onClose;
             this.agv = agv.courier().agv();
             StateSource generated = new HospitalStateProvider(agv.courier(), agv.building());
@@ -286,6 +288,7 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
         @Override
         public void close() {
+            hospital.close();
             onClose.run();
         }
     }

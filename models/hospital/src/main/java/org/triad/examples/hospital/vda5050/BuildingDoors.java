@@ -38,12 +38,17 @@ public final class BuildingDoors {
         BuildingDoors doors = new BuildingDoors(link, clock);
         clock.run(s -> {
             for (Door d : s.doors()) {
-                doors.publish(d, null);
+                if (!isLandingDoor(d.name())) {
+                    doors.publish(d, null);
+                }
             }
             s.addStepListener(() -> doors.publishChanges(s));
         });
         for (Door d : clock.call(Simulation::doors)) {
             String name = d.name();
+            if (isLandingDoor(name)) {
+                continue; // a lift's landing door opens and closes with its cabin (BuildingLifts), not on request
+            }
             link.subscribe(DeviceMessages.doorRequestTopic(name), DoorRequest.class, r -> clock.submit(s -> doors.handle(s, name, r)));
         }
         return doors;
@@ -72,10 +77,19 @@ public final class BuildingDoors {
     /** Runs on the clock thread after every step: a door that opened or closed since its last state is published. */
     private void publishChanges(Simulation s) {
         for (Door d : s.doors()) {
-            if (!mode(d).equals(published.get(d.name()))) {
+            if (!isLandingDoor(d.name()) && !mode(d).equals(published.get(d.name()))) {
                 publish(d, null);
             }
         }
+    }
+
+    /** The names of the doors served here (every door of the building but the lifts' landing doors). */
+    public static java.util.List<String> served(SimulationClock clock) {
+        return clock.call(s -> s.doors().stream().map(Door::name).filter(n -> !isLandingDoor(n)).toList());
+    }
+
+    private static boolean isLandingDoor(String name) {
+        return org.triad.examples.hospital.HospitalFloor.LIFT_LANDINGS.stream().anyMatch(l -> l.door().equals(name));
     }
 
     private static String mode(Door d) {

@@ -26,7 +26,12 @@ import org.triad.vda5050.mqtt.BrokerUnreachableException;
  * <pre>
  * java ... HospitalAgvMain --broker tcp://127.0.0.1:1883 [--serial courier-1 | --count N] [--speed 10|max] [--seed 42]
  *                          [--out DIR] [--close-fire-door-at SECONDS] [--battery PERCENT]
+ *                          [--break-lift-at SECONDS] [--devices on|off]
  * </pre>
+ *
+ * The building serves its doors and its lift on the broker ({@link BuildingDoors}, {@link BuildingLifts}); with
+ * {@code --devices off} it does not (a building whose devices do not answer). {@code --break-lift-at T} makes the
+ * lift stop between floors on its first ride after virtual time T.
  *
  * On a clean stop it prints how fast the building ran: {@code building: 600.0 s simulated in 60.0 s (10.00x real
  * time), CPU 12.3 s}.
@@ -40,10 +45,17 @@ public final class HospitalAgvMain {
      * @param out              where each AGV draws its picture, or null
      * @param closeFireDoorAt  virtual time at which the fire door closes in every AGV's hospital, or null
      * @param battery          every courier's initial battery charge, percent
+     * @param breakLiftAt      virtual time from which the lift stops between floors on its next ride, or null
+     * @param devices          whether the building serves its doors and lift on the broker
      */
-    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery) {
+    public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery,
+            Double breakLiftAt, boolean devices) {
         public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
             this(broker, serials, seed, speed, out, closeFireDoorAt, 100);
+        }
+
+        public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery) {
+            this(broker, serials, seed, speed, out, closeFireDoorAt, battery, null, true);
         }
 
         public Options {
@@ -61,6 +73,9 @@ public final class HospitalAgvMain {
             }
             if (closeFireDoorAt != null && (!(closeFireDoorAt >= 0) || closeFireDoorAt.isInfinite())) {
                 throw new IllegalArgumentException("--close-fire-door-at takes a time in seconds >= 0, not " + closeFireDoorAt);
+            }
+            if (breakLiftAt != null && (!(breakLiftAt >= 0) || breakLiftAt.isInfinite())) {
+                throw new IllegalArgumentException("--break-lift-at takes a time in seconds >= 0, not " + breakLiftAt);
             }
             serials = List.copyOf(serials);
         }
@@ -110,6 +125,8 @@ public final class HospitalAgvMain {
         Path out = null;
         Double door = null;
         double battery = 100;
+        Double breakLift = null;
+        boolean devices = true;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (i + 1 >= args.length) {
@@ -126,6 +143,13 @@ public final class HospitalAgvMain {
                     case "--out" -> out = Path.of(v);
                     case "--close-fire-door-at" -> door = Double.parseDouble(v);
                     case "--battery" -> battery = Double.parseDouble(v);
+                    case "--break-lift-at" -> breakLift = Double.parseDouble(v);
+                    case "--devices" -> {
+                        if (!v.equals("on") && !v.equals("off")) {
+                            throw new IllegalArgumentException("--devices takes on or off, not '" + v + "'");
+                        }
+                        devices = v.equals("on");
+                    }
                     default -> throw new IllegalArgumentException("unknown option " + a);
                 }
             } catch (NumberFormatException e) {
@@ -136,7 +160,7 @@ public final class HospitalAgvMain {
             throw new IllegalArgumentException("give --serial S or --count N (serials courier-1..N), not both");
         }
         List<String> serials = count != null ? Options.numbered("courier", count) : List.of(serial == null ? "courier-1" : serial);
-        return new Options(broker, serials, seed, speed, out, door, battery);
+        return new Options(broker, serials, seed, speed, out, door, battery, breakLift, devices);
     }
 
     /** Starts the building and its AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
@@ -162,6 +186,9 @@ public final class HospitalAgvMain {
         }
         if (o.closeFireDoorAt() != null) {
             building.sim().at(o.closeFireDoorAt()).closeDoor(HospitalFloor.FIRE_DOOR);
+        }
+        if (o.breakLiftAt() != null) {
+            building.sim().at(o.breakLiftAt()).breakLift(HospitalFloor.LIFT);
         }
         building.onContact(c -> out.println(c));
         long cpuStart = cpuNanos();
@@ -201,12 +228,15 @@ public final class HospitalAgvMain {
             building.stop();
             return 2;
         }
-        if (o.broker().startsWith("tcp://")) {
+        if (!o.devices()) {
+            out.println("devices: off (--devices off): the building's doors and lift answer no request");
+        } else if (o.broker().startsWith("tcp://")) {
             try {
                 deviceLink.set(DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line)));
                 BuildingDoors.serve(building, deviceLink.get());
-                out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
-                        + " answer requests on triad/devices/v1/doors/<name>/request");
+                BuildingLifts.serve(building, deviceLink.get());
+                out.println("devices: doors " + BuildingDoors.served(clock) + " answer requests on triad/devices/v1/doors/<name>/request, lifts "
+                        + BuildingLifts.names(clock) + " on triad/devices/v1/lifts/<name>/request");
             } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
                 err.println("triad robot: " + e.getMessage());
                 agvs.forEach(SimulatedAgv::close);

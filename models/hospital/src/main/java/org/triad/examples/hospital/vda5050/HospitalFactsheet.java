@@ -41,6 +41,10 @@ final class HospitalFactsheet {
         action(actions, "guide", "leads the person along the edge", "EDGE").addObject().put("key", "personId").put("valueDataType", "STRING");
         action(actions, "walk", "follows the person walking along the edge", "EDGE").addObject().put("key", "personId")
                 .put("valueDataType", "STRING");
+        action(actions, "passDoor", "passes the building's door on the edge (this simulated building opens it)", "EDGE").addObject()
+                .put("key", "doorId").put("valueDataType", "STRING");
+        action(actions, "ride", "rides the building's lift from landing to landing (this simulated building brings it)", "EDGE").addObject()
+                .put("key", "liftId").put("valueDataType", "STRING");
         action(actions, "cancelOrder", "stops at the next node and drops the rest of the order", "INSTANT");
         action(actions, "startPause", "holds still", "INSTANT");
         action(actions, "stopPause", "goes on", "INSTANT");

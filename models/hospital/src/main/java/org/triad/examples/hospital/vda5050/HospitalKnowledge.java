@@ -16,7 +16,7 @@ final class HospitalKnowledge {
     private final Map<String, String> people = new HashMap<>();
 
     HospitalKnowledge() {
-        HospitalFloor.ITEMS.forEach(i -> items.put(i, "storage"));
+        items.putAll(HospitalFloor.ITEM_ROOMS);
         people.put("alice", "lobby");
         people.put("bob", "ward2");
     }

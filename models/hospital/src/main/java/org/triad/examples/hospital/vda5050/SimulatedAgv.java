@@ -284,6 +284,9 @@ public final class SimulatedAgv implements AutoCloseable {
     /** Handles a message; {@code busy} while an order runs (new orders are then rejected, updates appended). */
     private void handle(Received r, boolean busy) {
         if (r.address().topic() == Topic.ORDER) {
+            if (!busy) {
+                carriedByLift();
+            }
             receiveOrder(r.as(Order.class), busy);
         } else if (r.address().topic() == Topic.INSTANT_ACTIONS) {
             for (Action a : r.as(InstantActions.class).actions()) {
@@ -369,12 +372,13 @@ public final class SimulatedAgv implements AutoCloseable {
                 return Optional.of("validationError: edge '" + e.edgeId() + "' does not join nodes " + nodes.get(i).nodeId() + " and "
                         + nodes.get(i + 1).nodeId());
             }
-            if (floor.route(e.startNodeId(), e.endNodeId()).isEmpty()) {
+            boolean ride = e.actions().stream().anyMatch(a -> a.actionType().equals("ride"));
+            if (floor.route(e.startNodeId(), e.endNodeId()).isEmpty() && !ride) {
                 return Optional.of("noRouteError: no corridor from " + e.startNodeId() + " to " + e.endNodeId());
             }
             for (Action a : e.actions()) {
-                if (!List.of("guide", "walk").contains(a.actionType())) {
-                    return Optional.of("validationError: edge action '" + a.actionType() + "' is not supported (guide, walk)");
+                if (!List.of("guide", "walk", "passDoor", "ride").contains(a.actionType())) {
+                    return Optional.of("validationError: edge action '" + a.actionType() + "' is not supported (guide, walk, passDoor, ride)");
                 }
             }
         }
@@ -445,10 +449,36 @@ public final class SimulatedAgv implements AutoCloseable {
         drawPicture();
     }
 
+    /**
+     * A lift carried the AGV standing in one cabin to the cabin of another floor (the building moved it, not an order):
+     * its last node is now the cabin it stands in, so the next order starts there.
+     */
+    private void carriedByLift() {
+        boolean inCabin = HospitalFloor.LIFT_LANDINGS.stream().anyMatch(l -> l.cabin().equals(lastNodeId));
+        if (!inCabin || driving) {
+            return;
+        }
+        String at = floor.waypointAt(robot.position());
+        if (!at.equals(lastNodeId) && HospitalFloor.LIFT_LANDINGS.stream().anyMatch(l -> l.cabin().equals(at))) {
+            log.accept("agv " + serial + ": carried by the lift from " + lastNodeId + " to " + at);
+            lastNodeId = at;
+        }
+    }
+
     private boolean traverse(Edge e) {
         WayPoint src = objects.waypoint(e.startNodeId());
         WayPoint dst = objects.waypoint(e.endNodeId());
         for (Action a : e.actions()) {
+            // the world's devices as edge actions (./triad run --robots vda5050: drives any model this way): the building
+            // this AGV lives in opens the door or brings the lift itself, as the hospital's world binding does over the broker
+            if (a.actionType().equals("passDoor")) {
+                List<String> doors = objects.doors().stream().map(d -> d.name()).toList();
+                return courier.worldActor().passDoor(objects.door(parameter(a, "doorId", doors)), src, dst);
+            }
+            if (a.actionType().equals("ride")) {
+                List<String> lifts = objects.lifts().stream().map(l -> l.name()).toList();
+                return courier.worldActor().ride(objects.lift(parameter(a, "liftId", lifts)), src, dst);
+            }
             String person = parameter(a, "personId", HospitalFloor.PEOPLE.keySet());
             if (a.actionType().equals("guide")) {
                 return courier.robotActor().guide(objects.person(person), src, dst);

@@ -6,12 +6,16 @@ import java.util.Objects;
 import java.util.Optional;
 
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.vda5050.devices.RemoteDoor;
+import org.triad.vda5050.devices.RemoteLift;
 import org.triad.examples.hospital.HospitalObjects;
 import org.triad.runtime.app.FailureExplaining;
 import org.triad.vda5050.master.RemoteAgv;
 
 import generated.hospital.IWorld;
+import generated.hospital.domain.Door;
 import generated.hospital.domain.Item;
+import generated.hospital.domain.Lift;
 import generated.hospital.domain.Person;
 import generated.hospital.domain.Room;
 import generated.hospital.domain.WayPoint;
@@ -19,24 +23,33 @@ import generated.hospital.domain.WayPoint;
 /**
  * The robotics expert's {@code IWorld} over VDA 5050: corridors are the floor's model edges minus those the
  * AGV reports blocked (information {@code blockedEdge}); items and people are where master control last
- * saw the AGV leave them; a person's walk is an order whose edge carries the action {@code walk}.
+ * saw the AGV leave them; a person's walk is an order whose edge carries the action {@code walk}. The building's
+ * doors and lift are devices on the broker ({@link RemoteDoor}, {@link RemoteLift}): passing a door asks the building
+ * to open it, drives through and asks it to close; a ride calls the cabin, drives in, calls it to the other floor and
+ * drives out. A device that refuses, stops between floors or does not answer in time fails the action with that
+ * reason ({@link #lastFailure()}), which RefArc puts on Status.
  */
 public final class VdaBuilding implements IWorld, FailureExplaining {
     private final RemoteAgv agv;
     private final HospitalFloor floor;
     private final HospitalObjects objects;
     private final HospitalKnowledge knowledge;
+    private final BuildingDevices devices;
+    private final Object failureLock = new Object();
+    /** Why the last door or lift action failed on a device (not on the AGV); null after any other outcome. */
+    private String deviceFailure;
 
-    VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge) {
+    VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge, BuildingDevices devices) {
         this.agv = Objects.requireNonNull(agv, "agv");
         this.floor = Objects.requireNonNull(floor, "floor");
         this.objects = Objects.requireNonNull(objects, "objects");
         this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
+        this.devices = Objects.requireNonNull(devices, "devices");
     }
 
     @Override
     public boolean adj(WayPoint a, WayPoint b) {
-        if (floor.route(a.name(), b.name()).isEmpty()) {
+        if (!floor.isCorridor(a.name(), b.name())) {
             return false;
         }
         String edge = a.name() + "-" + b.name();
@@ -64,6 +77,82 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
     }
 
     @Override
+    public boolean doorway(Door d, WayPoint a, WayPoint b) {
+        return HospitalFloor.controlledDoor(a.name(), b.name()).map(d.name()::equals).orElse(false);
+    }
+
+    @Override
+    public boolean landing(Lift l, WayPoint w) {
+        return HospitalFloor.liftLandingAt(w.name()).map(x -> x.lift().equals(l.name())).orElse(false);
+    }
+
+    /** The building opens the door, the AGV drives through, the building closes it behind (a door left open is reported). */
+    @Override
+    public boolean passDoor(Door d, WayPoint src, WayPoint dst) {
+        deviceFailure(null);
+        if (!doorway(d, src, dst)) {
+            return deviceFailure("door '" + d.name() + "' does not join " + src.name() + " and " + dst.name());
+        }
+        RemoteDoor door;
+        try {
+            door = devices.door(d.name());
+        } catch (RuntimeException e) {
+            return deviceFailure("door '" + d.name() + "' cannot be reached: " + e.getMessage());
+        }
+        if (!door.open()) {
+            return deviceFailure(door.lastFailure().orElse("door '" + d.name() + "' did not open"));
+        }
+        if (!agv.drive(src.name(), dst.name())) {
+            return false;
+        }
+        if (!door.close()) {
+            devices.problem("agv " + agv.name() + " passed door '" + d.name() + "', which stays open: "
+                    + door.lastFailure().orElse("it did not close"));
+        }
+        return true;
+    }
+
+    /**
+     * The ride from landing {@code src} to landing {@code dst}: the building calls the cabin to src's floor, the AGV drives
+     * into it, the cabin carries it to dst's floor and the AGV drives out to dst.
+     */
+    @Override
+    public boolean ride(Lift l, WayPoint src, WayPoint dst) {
+        deviceFailure(null);
+        Optional<HospitalFloor.LiftLanding> from = HospitalFloor.liftLandingAt(src.name()).filter(x -> x.lift().equals(l.name()));
+        Optional<HospitalFloor.LiftLanding> to = HospitalFloor.liftLandingAt(dst.name()).filter(x -> x.lift().equals(l.name()));
+        if (from.isEmpty() || to.isEmpty() || from.get().floor() == to.get().floor()) {
+            return deviceFailure(src.name() + " and " + dst.name() + " are not landings of lift '" + l.name() + "' on two floors");
+        }
+        RemoteLift lift;
+        try {
+            lift = devices.lift(l.name());
+        } catch (RuntimeException e) {
+            return deviceFailure("lift '" + l.name() + "' cannot be reached: " + e.getMessage());
+        }
+        if (!lift.call(from.get().floor())) {
+            return deviceFailure(lift.lastFailure().orElse("lift '" + l.name() + "' did not come"));
+        }
+        if (!agv.drive(src.name(), from.get().cabin())) {
+            return false;
+        }
+        if (!lift.call(to.get().floor())) {
+            return deviceFailure(lift.lastFailure().orElse("lift '" + l.name() + "' did not arrive"));
+        }
+        return agv.drive(to.get().cabin(), dst.name());
+    }
+
+    @Override
+    public List<Door> doors() {
+        return objects.doors();
+    }
+
+    @Override
+    public List<Lift> lifts() {
+        return objects.lifts();
+    }
+
+    @Override
     public List<WayPoint> wayPoints() {
         return objects.corridorWaypoints();
     }
@@ -85,6 +174,19 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
 
     @Override
     public Optional<String> lastFailure() {
+        synchronized (failureLock) {
+            if (deviceFailure != null) {
+                return Optional.of(deviceFailure);
+            }
+        }
         return agv.lastFailure();
+    }
+
+    /** Records why a device action failed (null: it did not fail on a device); returns false for the action. */
+    private boolean deviceFailure(String why) {
+        synchronized (failureLock) {
+            deviceFailure = why;
+        }
+        return false;
     }
 }

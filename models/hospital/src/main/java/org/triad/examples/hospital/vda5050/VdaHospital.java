@@ -30,17 +30,28 @@ import generated.hospital.HospitalStateProvider;
  * }
  * }</pre>
  */
-public final class VdaHospital {
+public final class VdaHospital implements AutoCloseable {
     private final HospitalObjects objects = new HospitalObjects();
     private final VdaCourier courier;
     private final VdaBuilding building;
+    private final BuildingDevices devices;
 
+    /** Doors and lifts are reached on the master's broker with the default timeouts (10 s a door, 60 s a lift). */
     public VdaHospital(MasterControl master, String serialNumber) {
+        this(master, serialNumber, BuildingDevices.DOOR_SECONDS, BuildingDevices.LIFT_SECONDS);
+    }
+
+    /**
+     * @param doorSeconds wall-clock seconds to wait for the building to open or close a door (&gt; 0)
+     * @param liftSeconds wall-clock seconds to wait for the lift to stand open at a floor (&gt; 0)
+     */
+    public VdaHospital(MasterControl master, String serialNumber, double doorSeconds, double liftSeconds) {
         Objects.requireNonNull(master, "master");
         RemoteAgv agv = master.agv(serialNumber);
         HospitalKnowledge knowledge = new HospitalKnowledge();
+        devices = new BuildingDevices(master.broker(), serialNumber, doorSeconds, liftSeconds, System.err::println);
         courier = new VdaCourier(agv, objects, knowledge);
-        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge);
+        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge, devices);
     }
 
     public HospitalObjects objects() {
@@ -53,6 +64,12 @@ public final class VdaHospital {
 
     public VdaBuilding building() {
         return building;
+    }
+
+    /** Closes the connection to the building's devices, if a door or lift action opened one. */
+    @Override
+    public void close() {
+        devices.close();
     }
 
     /** Runs the task through a fresh RefArc on this robot (synchronously), handing each status event to {@code progress}. */
