@@ -13,6 +13,7 @@ import org.triad.runtime.app.TaskInstance;
 import org.triad.runtime.schema.GoalSolver;
 import org.triad.vda5050.master.MasterControl;
 import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
 
 import generated.hospital.HospitalActionExecutor;
 import generated.hospital.HospitalSchema;
@@ -36,10 +37,18 @@ public final class VdaHospital {
     private final VdaBuilding building;
 
     public VdaHospital(MasterControl master, String serialNumber) {
+        this(master, serialNumber, null);
+    }
+
+    /**
+     * The robot with its drives under {@code traffic} (each move and guide reserves its lane, doors and corridor
+     * first, see {@link RemoteAgv#driveRoute}); null drives each edge at once.
+     */
+    public VdaHospital(MasterControl master, String serialNumber, TrafficControl traffic) {
         Objects.requireNonNull(master, "master");
         RemoteAgv agv = master.agv(serialNumber);
         HospitalKnowledge knowledge = new HospitalKnowledge();
-        courier = new VdaCourier(agv, objects, knowledge);
+        courier = new VdaCourier(agv, objects, knowledge, traffic);
         building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge);
     }
 
