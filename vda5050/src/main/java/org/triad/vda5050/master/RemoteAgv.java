@@ -301,7 +301,15 @@ public final class RemoteAgv implements FailureExplaining {
     }
 
     private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions) {
-        if (!traffic.place(name(), route.get(0)) || !traffic.decisionPoint(name()).equals(route.get(0))) {
+        awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
+        boolean idle;
+        synchronized (lock) {
+            idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
+        }
+        // an idle AGV asked to start where the map does not have it (its last drive failed and it ended elsewhere):
+        // the caller's start is where it stands (the robot binding reads it from the AGV), so it is re-placed there
+        boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
+        if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
                 return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
                         + (traffic.read(t -> t.robots().contains(name())) ? traffic.decisionPoint(name()) : "?")

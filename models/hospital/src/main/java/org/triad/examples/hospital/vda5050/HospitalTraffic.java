@@ -15,8 +15,8 @@ import org.triad.sim.Vec2;
 
 /**
  * The hospital's floor map as traffic control sees it, derived from {@link HospitalFloor}: a node per model
- * waypoint (corridor waypoints {@value #JUNCTION} robots, rooms {@value #ROOM} as the building parks that
- * many along their walls), an edge per model edge (one lane), a door area (one robot) per door an edge passes
+ * waypoint (corridor waypoints and rooms one robot, the lobby {@value #ROOM}, as the couriers start parked along
+ * its walls), an edge per model edge (one lane), a door area (one robot) per door an edge passes
  * through, and a corridor area (one robot) per corridor that an edge's route runs through round corners
  * (the side corridors: nobody can pass a robot there, nor wait in it).
  */
@@ -26,7 +26,10 @@ public final class HospitalTraffic {
      * so a second robot sent there is stopped by the first (PATH_BLOCKED in the building), whatever the corridor's width.
      */
     public static final int JUNCTION = 1;
-    /** Robots a room holds at once (the building's parking spots along its walls). */
+    /**
+     * Robots the lobby holds at once: the couriers start parked along its walls. Every other room holds one: a
+     * courier ends its move on the room's waypoint, so a second one sent there is stopped by the first.
+     */
     public static final int ROOM = 20;
 
     private HospitalTraffic() {
@@ -38,7 +41,7 @@ public final class HospitalTraffic {
             b.node(c, JUNCTION);
         }
         for (String r : HospitalFloor.ROOMS) {
-            b.node(r, ROOM);
+            b.node(r, r.equals(HospitalFloor.ROBOT_START) ? ROOM : 1);
         }
         Map<String, List<String>> doors = new LinkedHashMap<>();
         Map<String, List<String>> corridors = new LinkedHashMap<>();
