@@ -117,24 +117,33 @@ public final class DoorKeeper implements AutoCloseable {
                 return; // a close is on its way: it checks again before it is sent
             }
         }
-        closer.execute(() -> {
-            try {
-                synchronized (opening.get(name)) { // sent under the door's lock: an open request for the next robot follows it
-                    if (stillNeeded.getAsBoolean() || closeSent.contains(name)) {
-                        return;
-                    }
-                    link.publish(DeviceMessages.doorRequestTopic(name), new DoorRequest(UUID.randomUUID().toString(), "traffic-control", name,
-                            DeviceMessages.CLOSED, Instant.now().toString()), false);
-                    closeSent.add(name);
-                    used.remove(name);
-                }
-                log.accept("traffic: door '" + name + "' asked to close: no robot holds or waits for it");
-            } finally {
-                synchronized (this) {
-                    closing.remove(name);
-                }
+        try {
+            closer.execute(() -> closeNow(name, stillNeeded));
+        } catch (java.util.concurrent.RejectedExecutionException closed) { // the fleet is closing: the doors stay as they are
+            synchronized (this) {
+                closing.remove(name);
             }
-        });
+        }
+    }
+
+    /** Runs on a closer thread: a second look under the door's lock, then the request. */
+    private void closeNow(String name, java.util.function.BooleanSupplier stillNeeded) {
+        try {
+            synchronized (opening.get(name)) { // sent under the door's lock: an open request for the next robot follows it
+                if (stillNeeded.getAsBoolean() || closeSent.contains(name)) {
+                    return;
+                }
+                link.publish(DeviceMessages.doorRequestTopic(name), new DoorRequest(UUID.randomUUID().toString(), "traffic-control", name,
+                        DeviceMessages.CLOSED, Instant.now().toString()), false);
+                closeSent.add(name);
+                used.remove(name);
+            }
+            log.accept("traffic: door '" + name + "' asked to close: no robot holds or waits for it");
+        } finally {
+            synchronized (this) {
+                closing.remove(name);
+            }
+        }
     }
 
     @Override

@@ -306,8 +306,8 @@ public final class RemoteAgv implements FailureExplaining {
         synchronized (lock) {
             idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
         }
-        // an idle AGV asked to start where the map does not have it (its last drive failed and it ended elsewhere):
-        // the caller's start is where it stands (the robot binding reads it from the AGV), so it is re-placed there
+        // an idle AGV asked to start at a node of its base short of its decision point (its last drive failed and it
+        // stopped before): its base ends there, so it can start again instead of every later drive being refused
         boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
         if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {

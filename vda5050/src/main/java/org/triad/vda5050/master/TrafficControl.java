@@ -125,30 +125,25 @@ public final class TrafficControl {
     }
 
     /**
-     * The robot stands idle at {@code node}, which is not its decision point on the map (its last drive failed and
-     * the AGV ended elsewhere): it is re-placed there, what it held freed. False when that node has no room, or while
+     * The robot stands idle at {@code node} of its base, short of its decision point (its last drive failed and the
+     * AGV stopped before it): its base ends there from now on, what lay beyond freed, so that it can start again
+     * from where it stands. False when {@code node} is not on its base (the map does not know where it is) or while
      * it waits for a stretch.
      */
     synchronized boolean relocate(String robot, String node) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
             return place(robot, node);
         }
-        if (table.decisionPoint(robot).equals(node) && table.base(robot).size() == 1) {
+        if (table.decisionPoint(robot).equals(node)) {
             return true;
         }
-        if (table.waiting(robot).isPresent() || !table.map().hasNode(node)) {
+        if (table.waiting(robot).isPresent() || !table.released(robot, node)) {
             return false;
         }
-        for (Resource r : table.map().standing(node)) {
-            if (table.holders(r).stream().filter(h -> !h.equals(robot)).count() >= r.capacity()) {
-                log.accept("traffic: " + robot + " is asked to start at " + node + ", not at " + table.base(robot) + " as the map has it, but "
-                        + r + " is full (" + String.join(", ", table.holders(r)) + ")");
-                return false;
-            }
-        }
-        log.accept("traffic: " + robot + " stands idle at " + node + ", not at " + table.base(robot) + " as the map had it: re-placed there");
-        deliver(table.remove(robot));
-        return place(robot, node);
+        log.accept("traffic: " + robot + " stands idle at " + node + ", short of its decision point " + table.decisionPoint(robot)
+                + ": its base ends there");
+        deliver(table.truncate(robot, node));
+        return true;
     }
 
     synchronized boolean isLost(String robot) {
