@@ -44,7 +44,7 @@ import org.triad.vda5050.protocol.AgvState;
  * left out.
  *
  * <pre>
- * mvn -B -q -pl models/hospital -am test-compile
+ * mvn -B -q -pl models/hospital -am package -DskipTests
  * java -cp "$(cat models/hospital/target/classpath.txt):models/hospital/target/classes:models/hospital/target/test-classes" \
  *     org.triad.examples.hospital.vda5050.BuildingTrafficBenchmark [simulated-minutes=30] [speed=10] [fleets=2,5,10,20] [seed=1]
  * </pre>
