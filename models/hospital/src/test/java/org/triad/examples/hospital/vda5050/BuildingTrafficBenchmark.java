@@ -46,7 +46,7 @@ import org.triad.vda5050.protocol.AgvState;
  * <pre>
  * mvn -B -q -pl models/hospital -am package -DskipTests
  * java -cp "$(cat models/hospital/target/classpath.txt):models/hospital/target/classes:models/hospital/target/test-classes" \
- *     org.triad.examples.hospital.vda5050.BuildingTrafficBenchmark [simulated-minutes=30] [speed=10] [fleets=2,5,10,20] [seed=1]
+ *     org.triad.examples.hospital.vda5050.BuildingTrafficBenchmark [simulated-minutes=30] [speed=10] [fleets=2,5,10,20] [seed=1] [both|reserved|unreserved]
  * </pre>
  */
 public final class BuildingTrafficBenchmark {
@@ -71,9 +71,16 @@ public final class BuildingTrafficBenchmark {
             fleets.add(Integer.parseInt(f.trim()));
         }
         long seed = args.length > 3 ? Long.parseLong(args[3]) : 1;
+        String modes = args.length > 4 ? args[4] : "both";
+        List<Boolean> reservations = switch (modes) {
+            case "both" -> List.of(true, false);
+            case "reserved" -> List.of(true);
+            case "unreserved" -> List.of(false);
+            default -> throw new IllegalArgumentException("modes is both, reserved or unreserved, not '" + modes + "'");
+        };
         List<Row> rows = new ArrayList<>();
         for (int n : fleets) {
-            for (boolean reserved : List.of(true, false)) {
+            for (boolean reserved : reservations) {
                 Row r = run(n, reserved, minutes, speed, seed);
                 rows.add(r);
                 System.err.println(format(r));
