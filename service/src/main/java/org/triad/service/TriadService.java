@@ -100,7 +100,10 @@ public final class TriadService implements AutoCloseable {
             FleetRoster roster = new FleetRoster();
             robots = connect(models, o, roster, traffic);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
-            fleet = new FleetService(catalog, store, robots, new GoalSolver(models.schema()), Clock.systemUTC());
+            GoalSolver solver = new GoalSolver(models.schema());
+            // robots under traffic control: moves cost their expected wait (congestion), so plans may go round it
+            solver = traffic.costs().map(solver::withCosts).orElse(solver);
+            fleet = new FleetService(catalog, store, robots, solver, Clock.systemUTC());
             roster.attach(fleet);
             java.util.Optional<ChargingPolicy> charging = ChargingPolicy.of(Thread.currentThread().getContextClassLoader());
             if (charging.isPresent()) {

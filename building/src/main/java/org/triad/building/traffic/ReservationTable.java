@@ -358,6 +358,20 @@ public final class ReservationTable {
         return holders.getOrDefault(r, Set.of());
     }
 
+    /**
+     * The robots that hold the resource or wait for a stretch that needs it (in arrival order after the holders):
+     * who still needs a door kept open.
+     */
+    public Set<String> needing(Resource r) {
+        Set<String> n = new LinkedHashSet<>(holders(r));
+        for (Request q : queue.values()) {
+            if (q.needed.contains(r)) {
+                n.add(q.robot);
+            }
+        }
+        return n;
+    }
+
     /** What the robot holds. */
     public Set<Resource> holding(String robot) {
         return Set.copyOf(robot(robot).holding);

@@ -7,6 +7,8 @@ import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Supplier;
 
+import org.triad.runtime.schema.ActionCosts;
+
 /**
  * What the operator sees of traffic: the robots waiting for a resource, for how long, for what and behind whom.
  * Each traffic control of the building (a master's, a simulation's) adds itself as a source; the service asks
@@ -29,10 +31,33 @@ public final class TrafficBoard {
     }
 
     private final List<Supplier<List<Waiting>>> sources = new CopyOnWriteArrayList<>();
+    private final List<ActionCosts> costs = new CopyOnWriteArrayList<>();
 
     /** Adds a traffic control's waits (called at each look; it locks its own table). */
     public void add(Supplier<List<Waiting>> source) {
         sources.add(Objects.requireNonNull(source, "source"));
+    }
+
+    /**
+     * Adds a traffic control's congestion costs ({@code TrafficControl.congestion}): the fleet's planner then
+     * prices each move by its expected wait, so a robot may take the free side of the ring.
+     */
+    public void addCosts(ActionCosts source) {
+        costs.add(Objects.requireNonNull(source, "source"));
+    }
+
+    /** The sum of every added source's costs, or empty while no traffic control added any (plans stay shortest). */
+    public java.util.Optional<ActionCosts> costs() {
+        if (costs.isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        return java.util.Optional.of(action -> {
+            double sum = 0;
+            for (ActionCosts c : costs) {
+                sum += c.extra(action);
+            }
+            return sum;
+        });
     }
 
     /** Every robot that has waited longer than {@code boundSeconds}, the longest first. */

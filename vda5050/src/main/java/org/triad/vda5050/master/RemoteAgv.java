@@ -259,10 +259,19 @@ public final class RemoteAgv implements FailureExplaining {
      * error: it is stopped at once with {@code startPause}), and for every reason {@link #drive} fails.
      */
     public boolean driveRoute(List<String> route, TrafficControl traffic) {
+        return driveRoute(route, traffic, null, Map.of());
+    }
+
+    /**
+     * {@link #driveRoute(List, TrafficControl)} doing {@code edgeActionType} (with these parameters) along every
+     * edge of the route, e.g. guiding a person: the call succeeds once the robot has arrived and every edge's
+     * action finished; with a null action type a plain drive under traffic control.
+     */
+    public boolean driveRoute(List<String> route, TrafficControl traffic, String edgeActionType, Map<String, ?> parameters) {
         if (route.size() < 2) {
             throw new IllegalArgumentException("a route has at least two nodes, got " + route);
         }
-        String call = "drive " + String.join(" -> ", route);
+        String call = (edgeActionType == null ? "drive " : edgeActionType + " ") + String.join(" -> ", route);
         if (!ready(call)) {
             return false;
         }
@@ -276,7 +285,11 @@ public final class RemoteAgv implements FailureExplaining {
             drivingRoute = true;
         }
         try {
-            return driveRouteUnder(route, traffic, call);
+            List<Action> edgeActions = new ArrayList<>();
+            for (int i = 1; edgeActionType != null && i < route.size(); i++) {
+                edgeActions.add(action(edgeActionType, parameters));
+            }
+            return driveRouteUnder(route, traffic, call, edgeActions);
         } finally {
             synchronized (lock) {
                 drivingRoute = false;
@@ -287,8 +300,16 @@ public final class RemoteAgv implements FailureExplaining {
         }
     }
 
-    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call) {
-        if (!traffic.place(name(), route.get(0)) || !traffic.decisionPoint(name()).equals(route.get(0))) {
+    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions) {
+        awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
+        boolean idle;
+        synchronized (lock) {
+            idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
+        }
+        // an idle AGV asked to start at a node of its base short of its decision point (its last drive failed and it
+        // stopped before): its base ends there, so it can start again instead of every later drive being refused
+        boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
+        if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
                 return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
                         + (traffic.read(t -> t.robots().contains(name())) ? traffic.decisionPoint(name()) : "?")
@@ -300,7 +321,8 @@ public final class RemoteAgv implements FailureExplaining {
                 (id, update, nodes, edges) -> publish(Topic.ORDER, new Order(headerIds.next(Topic.ORDER), HeaderIds.now(), Header.VERSION,
                         manufacturer, serialNumber, id, update, null, nodes, edges)),
                 why -> publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
-                        manufacturer, serialNumber, List.of(action("startPause", Map.of())))));
+                        manufacturer, serialNumber, List.of(action("startPause", Map.of())))), edgeActions);
+        screen.sent(drive.orderId()); // its states are progress of our order, not of a stranger's
         Optional<String> refused = drive.start();
         if (refused.isPresent()) {
             traffic.stopAt(name(), route.get(0));

@@ -11,6 +11,9 @@ import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.Decision.Refused;
 import org.triad.building.traffic.Wait;
 import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Messages.Action;
+import org.triad.vda5050.protocol.Messages.ActionState;
+import org.triad.vda5050.protocol.Messages.ActionStatus;
 import org.triad.vda5050.protocol.Messages.AgvError;
 import org.triad.vda5050.protocol.Messages.Edge;
 import org.triad.vda5050.protocol.Messages.Node;
@@ -41,6 +44,8 @@ final class RouteDrive {
     private final TrafficControl traffic;
     private final OrderSender orders;
     private final Consumer<String> stopNow;
+    /** The action done along every edge (e.g. guiding a person), one per edge, or empty. */
+    private final List<Action> edgeActions;
     private final List<Integer> stretchEnds = new ArrayList<>();
     private int updateId = -1;
     private int baseEnd;
@@ -51,6 +56,18 @@ final class RouteDrive {
      * @param stopNow sends the AGV an instant action that stops it at once (its argument the reason)
      */
     RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow) {
+        this(robot, route, orderId, traffic, orders, stopNow, List.of());
+    }
+
+    /**
+     * @param edgeActions one action per edge of the route (done while the robot drives it, e.g. guiding a person), or empty
+     */
+    RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow,
+            List<Action> edgeActions) {
+        if (!edgeActions.isEmpty() && edgeActions.size() != route.size() - 1) {
+            throw new IllegalArgumentException("one edge action per edge of " + route + ", not " + edgeActions.size());
+        }
+        this.edgeActions = List.copyOf(edgeActions);
         this.robot = robot;
         this.route = List.copyOf(route);
         this.orderId = orderId;
@@ -70,6 +87,10 @@ final class RouteDrive {
             return Optional.of(r.reason());
         }
         if (d instanceof Granted g) {
+            Optional<String> shut = traffic.openDoors(robot, g.stretch());
+            if (shut.isPresent()) {
+                return shut;
+            }
             baseEnd = g.stretch().size() - 1;
             stretchEnds.add(baseEnd);
         } else {
@@ -90,7 +111,10 @@ final class RouteDrive {
             if (d.get() instanceof Refused r) {
                 return endHere(r.reason());
             }
-            extend((Granted) d.get());
+            Optional<String> shut = extend((Granted) d.get());
+            if (shut.isPresent()) {
+                return endHere(shut.get());
+            }
         }
         Optional<Wait> late = traffic.overdue(robot);
         if (late.isPresent()) {
@@ -123,7 +147,16 @@ final class RouteDrive {
                 return endHere(refused.get());
             }
         }
-        if (passed == route.size() - 1 && s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving()) {
+        for (Action a : edgeActions) {
+            Optional<ActionState> as = s.actionState(a.actionId());
+            if (as.isPresent() && as.get().actionStatus() == ActionStatus.FAILED) {
+                traffic.stopAt(robot, route.get(passed));
+                return new Verdict(false, a.actionType() + " failed" + (as.get().resultDescription() == null ? "" : ": " + as.get().resultDescription()));
+            }
+        }
+        boolean actionsDone = edgeActions.stream()
+                .allMatch(a -> s.actionState(a.actionId()).map(as -> as.actionStatus() == ActionStatus.FINISHED).orElse(false));
+        if (passed == route.size() - 1 && s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving() && actionsDone) {
             return Verdict.DONE;
         }
         return Verdict.RUNNING;
@@ -149,7 +182,10 @@ final class RouteDrive {
                 return Optional.of(r.reason());
             }
             if (d instanceof Granted g) {
-                extend(g);
+                Optional<String> shut = extend(g);
+                if (shut.isPresent()) {
+                    return shut;
+                }
             } else {
                 waiting = true;
             }
@@ -157,11 +193,17 @@ final class RouteDrive {
         return Optional.empty();
     }
 
-    private void extend(Granted g) {
+    /** Opens the stretch's doors, then releases it to the AGV; the reason when a door stays shut (nothing released). */
+    private Optional<String> extend(Granted g) {
+        Optional<String> shut = traffic.openDoors(robot, g.stretch());
+        if (shut.isPresent()) {
+            return shut;
+        }
         int from = baseEnd;
         baseEnd += g.stretch().size() - 1;
         stretchEnds.add(baseEnd);
         send(from);
+        return Optional.empty();
     }
 
     /** Ends the order at the robot's decision point (the horizon deleted) and fails the call with the reason. */
@@ -178,7 +220,8 @@ final class RouteDrive {
         for (int i = from; i < route.size(); i++) {
             nodes.add(node(i));
             if (i + 1 < route.size()) {
-                edges.add(new Edge(route.get(i) + "-" + route.get(i + 1), 2 * i + 1, null, i + 1 <= baseEnd, route.get(i), route.get(i + 1), List.of()));
+                edges.add(new Edge(route.get(i) + "-" + route.get(i + 1), 2 * i + 1, null, i + 1 <= baseEnd, route.get(i), route.get(i + 1),
+                        edgeActions.isEmpty() ? List.of() : List.of(edgeActions.get(i))));
             }
         }
         orders.send(orderId, ++updateId, nodes, edges);

@@ -34,6 +34,8 @@ public final class TrafficControl {
     private final Consumer<String> log;
     private final Map<String, Decision> mailbox = new HashMap<>();
     private final long origin = System.nanoTime();
+    /** The doors tied to the door reservations, or null (reservations only). */
+    private volatile DoorKeeper doors;
 
     /**
      * @param waitBoundSeconds how long a robot may wait for a resource before its action fails with the reason
@@ -46,6 +48,35 @@ public final class TrafficControl {
         this.table = new ReservationTable(map, () -> (System.nanoTime() - origin) / 1e9);
         this.waitBoundSeconds = waitBoundSeconds;
         this.log = Objects.requireNonNull(log, "log");
+    }
+
+    /**
+     * Ties the building's doors to the door reservations from now on: a robot granted a stretch through a kept
+     * door has it opened first, and the door is asked to close once nobody holds or waits for it (see {@link DoorKeeper}).
+     */
+    public TrafficControl keepDoors(DoorKeeper keeper) {
+        this.doors = Objects.requireNonNull(keeper, "keeper");
+        return this;
+    }
+
+    /** Opens the kept doors of a granted stretch for the robot (outside the lock: it waits for the doors); the reason when one stays shut. */
+    Optional<String> openDoors(String robot, List<String> stretch) {
+        DoorKeeper keeper = doors;
+        if (keeper == null) {
+            return Optional.empty();
+        }
+        List<String> through = read(t -> {
+            List<String> ds = new java.util.ArrayList<>();
+            for (int i = 0; i + 1 < stretch.size(); i++) {
+                for (Resource r : t.map().step(stretch.get(i), stretch.get(i + 1))) {
+                    if (r.kind() == Resource.Kind.DOOR && !ds.contains(r.id())) {
+                        ds.add(r.id());
+                    }
+                }
+            }
+            return ds;
+        });
+        return keeper.open(robot, through);
     }
 
     public double waitBoundSeconds() {
@@ -72,8 +103,11 @@ public final class TrafficControl {
         return CongestionCosts.of(table.map(), (a, b) -> read(t -> t.expectedWait(a, b)), secondsPerStep);
     }
 
-    /** Puts the robot on the map where it stands, unless it is there already; false when its node has no room. */
-    synchronized boolean place(String robot, String node) {
+    /**
+     * Puts the robot on the map where it stands, unless it is there already; false when its node has no room.
+     * A fleet places each robot as it joins, so that nobody is sent into the place of one that stands idle.
+     */
+    public synchronized boolean place(String robot, String node) {
         if (table.robots().contains(robot) && table.isLost(robot)) {
             log.accept("traffic: " + robot + " is back, at " + node + "; the place it was lost at is free again");
             deliver(table.remove(robot));
@@ -88,6 +122,28 @@ public final class TrafficControl {
             log.accept("traffic: " + full.getMessage());
             return false;
         }
+    }
+
+    /**
+     * The robot stands idle at {@code node} of its base, short of its decision point (its last drive failed and the
+     * AGV stopped before it): its base ends there from now on, what lay beyond freed, so that it can start again
+     * from where it stands. False when {@code node} is not on its base (the map does not know where it is) or while
+     * it waits for a stretch.
+     */
+    synchronized boolean relocate(String robot, String node) {
+        if (!table.robots().contains(robot) || table.isLost(robot)) {
+            return place(robot, node);
+        }
+        if (table.decisionPoint(robot).equals(node)) {
+            return true;
+        }
+        if (table.waiting(robot).isPresent() || !table.released(robot, node)) {
+            return false;
+        }
+        log.accept("traffic: " + robot + " stands idle at " + node + ", short of its decision point " + table.decisionPoint(robot)
+                + ": its base ends there");
+        deliver(table.truncate(robot, node));
+        return true;
     }
 
     synchronized boolean isLost(String robot) {
@@ -132,8 +188,8 @@ public final class TrafficControl {
         }
     }
 
-    /** The robot is down where it is (its last will, a rogue stopped): nobody is sent into its place. */
-    synchronized void lost(String robot, String why) {
+    /** The robot is down where it is (its last will, a rogue stopped, gone from the fleet): nobody is sent into its place. */
+    public synchronized void lost(String robot, String why) {
         if (table.robots().contains(robot) && !table.isLost(robot)) { // once: a second call would forget the lane it stands on
             log.accept("traffic: " + robot + " lost: " + why);
             deliver(table.lost(robot, why));
@@ -165,6 +221,15 @@ public final class TrafficControl {
     }
 
     private void deliver(Changes c) {
+        DoorKeeper keeper = doors;
+        if (keeper != null) { // something was released or withdrawn: a door nobody needs any more is closed
+            for (String d : keeper.doors()) {
+                Optional<Resource> door = table.map().area(d).filter(r -> r.kind() == Resource.Kind.DOOR);
+                if (door.isPresent() && table.needing(door.get()).isEmpty()) {
+                    keeper.closeIfUnneeded(d, () -> read(t -> !t.needing(door.get()).isEmpty()));
+                }
+            }
+        }
         for (Granted g : c.granted()) {
             mailbox.put(g.robot(), g);
         }

@@ -6,6 +6,9 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
 
+import org.triad.building.BuildingContext;
+import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.vda5050.HospitalTraffic;
 import org.triad.examples.hospital.vda5050.VdaHospital;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
@@ -19,6 +22,9 @@ import org.triad.refarc.fleet.RobotPlatformProvider;
 import org.triad.vda5050.master.AgvDiscovery;
 import org.triad.vda5050.master.MasterControl;
 import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
+import org.triad.vda5050.master.DoorKeeper;
+import org.triad.vda5050.devices.DeviceLink;
 import org.triad.vda5050.master.VdaTimeouts;
 
 import generated.hospital.HospitalActionExecutor;
@@ -35,6 +41,14 @@ import generated.hospital.HospitalStateProvider;
  * whose state is what the AGV reports (its last node, its loads, its position and battery) and whose
  * actions are VDA 5050 orders ({@code ./triad robot --broker URL --count N} starts such AGVs). One that
  * goes OFFLINE or CONNECTIONBROKEN for longer than the reconnect grace leaves the fleet until it is back.
+ *
+ * <p>The couriers drive under one {@link TrafficControl} over the hospital's floor map ({@link HospitalTraffic}):
+ * each move and guide reserves its lane, the doors and the single-lane side corridor it passes first (the order's
+ * base; the rest its horizon), a courier waits for a held one instead of failing, and fails its action with
+ * the reason after {@code traffic=S} seconds (default {@value #TRAFFIC_WAIT_SECONDS}; RefArc re-plans). Each
+ * courier is placed on the map where it reports it stands as it joins; one that leaves is lost there until it
+ * is back. Its waits show on the operator page, and its expected waits are the planner's congestion costs.
+ * {@code traffic=off} drives every edge at once, as before traffic control (robots may then meet head to head).
  */
 public final class VdaHospitalFleet implements RobotPlatformProvider {
     public static final double DEFAULT_WAIT_SECONDS = 2;
@@ -51,7 +65,7 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "vda5050:tcp://HOST:PORT[,wait=S][,allow=SERIAL+SERIAL*]  the hospital couriers ONLINE on that VDA 5050 broker, and those that come later";
+        return "vda5050:tcp://HOST:PORT[,wait=S][,allow=SERIAL+SERIAL*][,traffic=S|off]  the hospital couriers ONLINE on that VDA 5050 broker, and those that come later, driven under traffic control";
     }
 
     @Override
@@ -59,9 +73,14 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         String[] parts = argument.split(",");
         String broker = parts[0].trim();
         double wait = DEFAULT_WAIT_SECONDS;
+        double trafficBound = TRAFFIC_WAIT_SECONDS;
         List<String> allowed = List.of();
         for (int i = 1; i < parts.length; i++) {
             String[] kv = parts[i].split("=", 2);
+            if (kv.length == 2 && kv[0].trim().equals("traffic")) {
+                trafficBound = trafficBound(kv[1].trim());
+                continue;
+            }
             if (kv.length == 2 && kv[0].trim().equals("allow")) {
                 allowed = List.of(kv[1].trim().split("\\+"));
                 if (allowed.stream().anyMatch(a -> !a.matches("[A-Za-z0-9_*-]+"))) {
@@ -83,7 +102,14 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         }
         VdaTimeouts timeouts = VdaTimeouts.defaults();
         MasterControl master = MasterControl.connect(broker, timeouts, line -> System.err.println("triad serve: " + line));
-        Roster roster = new Roster(master, context.changes());
+        TrafficControl traffic = trafficBound == 0 ? null
+                : new TrafficControl(HospitalTraffic.map(new HospitalFloor()), trafficBound, line -> System.err.println("triad serve: " + line));
+        if (traffic != null && context instanceof BuildingContext building) {
+            building.traffic().add(traffic::waiting); // the operator page's "Waiting for traffic"
+            building.traffic().addCosts(traffic.congestion(SECONDS_PER_MOVE)); // the planner prices moves by their expected wait
+        }
+        AutoCloseable doors = traffic == null ? null : keepDoors(broker, traffic);
+        Roster roster = new Roster(master, context.changes(), traffic);
         AgvDiscovery discovery = new AgvDiscovery(master, new AgvDiscovery.Requirements(MasterControl.TRIAD, allowed, REQUIRED_ACTIONS,
                 Math.max(wait, FACTSHEET_SECONDS), timeouts.reconnectGraceSeconds()), roster, line -> System.err.println("triad serve: " + line));
         long deadline = System.nanoTime() + (long) (wait * 1e9);
@@ -95,13 +121,20 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         while (!discovery.settled() && System.nanoTime() < settle) {
             Thread.sleep(50);
         }
-        List<FleetRobot> robots = roster.handOver(() -> {
+        Runnable closeAll = () -> {
             discovery.close();
             master.close();
-        });
+            if (doors != null) {
+                try {
+                    doors.close();
+                } catch (Exception e) {
+                    System.err.println("triad serve: closing the doors' link: " + e.getMessage());
+                }
+            }
+        };
+        List<FleetRobot> robots = roster.handOver(closeAll);
         if (robots.isEmpty()) {
-            discovery.close();
-            master.close();
+            closeAll.run();
             throw new IllegalStateException("no hospital courier (manufacturer '" + MasterControl.TRIAD + "') announced itself ONLINE on " + broker
                     + " within " + wait + " s (topic uagv/v2/" + MasterControl.TRIAD + "/+/connection)" + roster.refusals()
                     + "; start them with './triad robot --broker " + broker + " --count N'");
@@ -122,6 +155,50 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         }
     };
 
+    /**
+     * The building's doors (served as devices on the same broker by {@code ./triad robot}) tied to the door
+     * reservations: opened for the robot granted a way through, closed once nobody holds or waits for them.
+     * Plain brokers only (the secured broker's ACL has no device topics yet): on another one doors stay as they are.
+     */
+    private static AutoCloseable keepDoors(String broker, TrafficControl traffic) {
+        if (!broker.startsWith("tcp://")) {
+            System.err.println("triad serve: doors are not tied to traffic control on " + broker + " (the device protocol needs a plain tcp:// broker)");
+            return null;
+        }
+        DeviceLink link = DeviceLink.connect(broker, "triad-serve-doors-" + ProcessHandle.current().pid(), line -> System.err.println("triad serve: " + line));
+        DoorKeeper keeper = new DoorKeeper(link, HospitalTraffic.keptDoors(new HospitalFloor()), DOOR_SECONDS,
+                line -> System.err.println("triad serve: " + line));
+        traffic.keepDoors(keeper);
+        return () -> {
+            keeper.close();
+            link.close();
+        };
+    }
+
+    /** How long a door may take to open for a courier before its move fails with the reason. */
+    static final double DOOR_SECONDS = 30;
+
+    /** How long a courier may wait for a lane, a door or a corridor before its move fails with the reason (RefArc re-plans). */
+    static final double TRAFFIC_WAIT_SECONDS = 120;
+    /** A move's typical time (one model edge at the couriers' speed): the unit congestion costs count expected waits in. */
+    static final double SECONDS_PER_MOVE = 10;
+
+    private static double trafficBound(String value) {
+        if (value.equals("off")) {
+            return 0;
+        }
+        double s;
+        try {
+            s = Double.parseDouble(value);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("vda5050:...,traffic=S takes the seconds a courier may wait for traffic, or 'off', not '" + value + "'");
+        }
+        if (!(s > 0) || s > 3600) {
+            throw new IllegalArgumentException("vda5050:...,traffic=S takes 0 to 3600 seconds (or 'off'), not " + value);
+        }
+        return s;
+    }
+
     /** The actions {@link org.triad.examples.hospital.vda5050.VdaCourier} sends: an AGV whose factsheet lacks one cannot serve the hospital. */
     static final java.util.Set<String> REQUIRED_ACTIONS = java.util.Set.of("pick", "drop", "guide", "startFollowing");
     /** How long reading a courier's state waits for an order a previous master sent to end (one edge at walking speed and more). */
@@ -137,15 +214,30 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
     private static final class Roster implements AgvDiscovery.Listener {
         private final MasterControl master;
         private final FleetChanges changes;
+        private final TrafficControl traffic;
         private final Map<String, Courier> couriers = new TreeMap<>();
         private final Map<String, String> refused = new TreeMap<>();
         private List<FleetRobot> early = new ArrayList<>();
         private Runnable closeAll;
         private int open;
 
-        Roster(MasterControl master, FleetChanges changes) {
+        Roster(MasterControl master, FleetChanges changes, TrafficControl traffic) {
             this.master = master;
             this.changes = changes;
+            this.traffic = traffic;
+        }
+
+        /** Puts the AGV on the traffic map where it reports it stands, so that nobody is sent into its place; a reason if it cannot be. */
+        private Optional<String> placed(RemoteAgv agv) {
+            if (traffic == null) {
+                return Optional.empty();
+            }
+            String node = agv.state().map(s -> s.lastNodeId()).orElse(null);
+            if (node == null || !traffic.read(t -> t.map().hasNode(node))) {
+                return Optional.of("it reports node '" + node + "', which is not on the hospital's traffic map");
+            }
+            return traffic.place(agv.name(), node) ? Optional.empty()
+                    : Optional.of("its node '" + node + "' is full on the traffic map (" + traffic.read(t -> t.map().node(node).capacity()) + " robots)");
         }
 
         synchronized List<FleetRobot> handOver(Runnable closeAll) {
@@ -166,13 +258,17 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             synchronized (this) {
                 c = couriers.get(agv.serialNumber());
                 if (c == null) {
-                    c = new Courier(agv.serialNumber(), new VdaHospital(master, agv.serialNumber()), this::closed);
+                    c = new Courier(agv.serialNumber(), new VdaHospital(master, agv.serialNumber(), traffic), this::closed);
                 }
             }
             try {
                 c.stateSource().currentState();
             } catch (Exception e) {
                 return Optional.of("the hospital cannot read its state: " + e.getMessage());
+            }
+            Optional<String> offMap = placed(agv);
+            if (offMap.isPresent()) {
+                return Optional.of("traffic control cannot place it: " + offMap.get());
             }
             synchronized (this) {
                 refused.remove(agv.serialNumber());
@@ -190,6 +286,9 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
         @Override
         public void gone(RemoteAgv agv, String reason) {
+            if (traffic != null) {
+                traffic.lost(agv.name(), reason); // it may stand anywhere: nobody is driven into it until it is back
+            }
             changes.left(agv.serialNumber(), reason);
         }
 
@@ -200,6 +299,11 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
                 c = couriers.get(agv.serialNumber());
             }
             if (c != null) {
+                Optional<String> offMap = placed(agv);
+                if (offMap.isPresent()) {
+                    System.err.println("triad serve: " + agv.serialNumber() + " is back but traffic control cannot place it: " + offMap.get());
+                    return;
+                }
                 changes.joined(c);
             }
         }

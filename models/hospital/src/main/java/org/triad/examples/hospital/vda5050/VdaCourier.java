@@ -1,5 +1,6 @@
 package org.triad.examples.hospital.vda5050;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
@@ -7,6 +8,7 @@ import java.util.Optional;
 import org.triad.examples.hospital.HospitalObjects;
 import org.triad.runtime.app.FailureExplaining;
 import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
 import org.triad.vda5050.protocol.AgvState;
 
 import generated.hospital.IRobot;
@@ -22,8 +24,11 @@ public final class VdaCourier implements IRobot, FailureExplaining {
     private final RemoteAgv agv;
     private final HospitalObjects objects;
     private final HospitalKnowledge knowledge;
+    /** The traffic control its drives go through (reserving lanes, doors, corridors), or null to drive each edge at once. */
+    private final TrafficControl traffic;
 
-    VdaCourier(RemoteAgv agv, HospitalObjects objects, HospitalKnowledge knowledge) {
+    VdaCourier(RemoteAgv agv, HospitalObjects objects, HospitalKnowledge knowledge, TrafficControl traffic) {
+        this.traffic = traffic;
         this.agv = Objects.requireNonNull(agv, "agv");
         this.objects = Objects.requireNonNull(objects, "objects");
         this.knowledge = Objects.requireNonNull(knowledge, "knowledge");
@@ -35,7 +40,7 @@ public final class VdaCourier implements IRobot, FailureExplaining {
 
     @Override
     public boolean move(WayPoint src, WayPoint dst) {
-        return agv.drive(src.name(), dst.name());
+        return traffic == null ? agv.drive(src.name(), dst.name()) : agv.driveRoute(List.of(src.name(), dst.name()), traffic);
     }
 
     @Override
@@ -58,7 +63,8 @@ public final class VdaCourier implements IRobot, FailureExplaining {
 
     @Override
     public boolean guide(Person p, WayPoint src, WayPoint dst) {
-        boolean ok = agv.traverse(src.name(), dst.name(), "guide", Map.of("personId", p.name()));
+        boolean ok = traffic == null ? agv.traverse(src.name(), dst.name(), "guide", Map.of("personId", p.name()))
+                : agv.driveRoute(List.of(src.name(), dst.name()), traffic, "guide", Map.of("personId", p.name()));
         if (ok) {
             knowledge.personMoved(p.name(), dst.name());
         }

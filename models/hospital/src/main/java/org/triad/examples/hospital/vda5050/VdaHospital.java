@@ -13,6 +13,7 @@ import org.triad.runtime.app.TaskInstance;
 import org.triad.runtime.schema.GoalSolver;
 import org.triad.vda5050.master.MasterControl;
 import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
 
 import generated.hospital.HospitalActionExecutor;
 import generated.hospital.HospitalSchema;
@@ -38,7 +39,15 @@ public final class VdaHospital implements AutoCloseable {
 
     /** Doors and lifts are reached on the master's broker with the default timeouts (10 s a door, 60 s a lift). */
     public VdaHospital(MasterControl master, String serialNumber) {
-        this(master, serialNumber, BuildingDevices.DOOR_SECONDS, BuildingDevices.LIFT_SECONDS);
+        this(master, serialNumber, null);
+    }
+
+    /**
+     * The robot with its drives under {@code traffic} (each move and guide reserves its lane, doors and corridor
+     * first, see {@link RemoteAgv#driveRoute}); null drives each edge at once. Doors and lifts with the default timeouts.
+     */
+    public VdaHospital(MasterControl master, String serialNumber, TrafficControl traffic) {
+        this(master, serialNumber, traffic, BuildingDevices.DOOR_SECONDS, BuildingDevices.LIFT_SECONDS);
     }
 
     /**
@@ -46,11 +55,21 @@ public final class VdaHospital implements AutoCloseable {
      * @param liftSeconds wall-clock seconds to wait for the lift to stand open at a floor (&gt; 0)
      */
     public VdaHospital(MasterControl master, String serialNumber, double doorSeconds, double liftSeconds) {
+        this(master, serialNumber, null, doorSeconds, liftSeconds);
+    }
+
+    /**
+     * @param traffic the fleet's traffic control, or null to drive each edge at once
+     * @param doorSeconds wall-clock seconds to wait for the building to open or close a door (&gt; 0)
+     * @param liftSeconds wall-clock seconds to wait for the lift to stand open at a floor (&gt; 0)
+     */
+    public VdaHospital(MasterControl master, String serialNumber, TrafficControl traffic, double doorSeconds,
+            double liftSeconds) {
         Objects.requireNonNull(master, "master");
         RemoteAgv agv = master.agv(serialNumber);
         HospitalKnowledge knowledge = new HospitalKnowledge();
         devices = new BuildingDevices(master.broker(), serialNumber, doorSeconds, liftSeconds, System.err::println);
-        courier = new VdaCourier(agv, objects, knowledge);
+        courier = new VdaCourier(agv, objects, knowledge, traffic);
         building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge, devices);
     }
 

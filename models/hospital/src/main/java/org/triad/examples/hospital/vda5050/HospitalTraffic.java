@@ -1,0 +1,88 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import org.triad.building.traffic.Resource.Kind;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.examples.hospital.HospitalFloor;
+import org.triad.sim.FloorPlan;
+import org.triad.sim.Room;
+import org.triad.sim.Vec2;
+
+/**
+ * The hospital's floor map as traffic control sees it, derived from {@link HospitalFloor}: a node per model
+ * waypoint (corridor waypoints and rooms one robot, the lobby {@value #ROOM}, as the couriers start parked along
+ * its walls), an edge per model edge (one lane), a door area (one robot) per door an edge passes
+ * through, and a corridor area (one robot) per corridor that an edge's route runs through round corners
+ * (the side corridors: nobody can pass a robot there, nor wait in it).
+ */
+public final class HospitalTraffic {
+    /**
+     * Robots a corridor waypoint holds at once: one. A robot ends each model move standing on the waypoint itself,
+     * so a second robot sent there is stopped by the first (PATH_BLOCKED in the building), whatever the corridor's width.
+     */
+    public static final int JUNCTION = 1;
+    /**
+     * Robots the lobby holds at once: the couriers start parked along its walls. Every other room holds one: a
+     * courier ends its move on the room's waypoint, so a second one sent there is stopped by the first.
+     */
+    public static final int ROOM = 20;
+
+    private HospitalTraffic() {
+    }
+
+    public static TrafficMap map(HospitalFloor floor) {
+        TrafficMap.Builder b = TrafficMap.builder();
+        for (String c : HospitalFloor.CORRIDOR_WAYPOINTS) {
+            b.node(c, JUNCTION);
+        }
+        for (String r : HospitalFloor.ROOMS) {
+            b.node(r, r.equals(HospitalFloor.ROBOT_START) ? ROOM : 1);
+        }
+        Map<String, List<String>> doors = new LinkedHashMap<>();
+        Map<String, List<String>> corridors = new LinkedHashMap<>();
+        List<String> waypoints = floor.modelWaypoints();
+        for (int i = 0; i < waypoints.size(); i++) {
+            for (int j = i + 1; j < waypoints.size(); j++) {
+                String a = waypoints.get(i);
+                String z = waypoints.get(j);
+                Optional<List<String>> route = floor.route(a, z);
+                if (route.isEmpty()) {
+                    continue;
+                }
+                String edge = a + "-" + z;
+                b.edge(a, z);
+                for (String door : floor.doorsOn(route.get())) {
+                    doors.computeIfAbsent(door, k -> new ArrayList<>()).add(edge);
+                }
+                corridorRoundCorners(floor.plan(), route.get()).ifPresent(c -> corridors.computeIfAbsent(c, k -> new ArrayList<>()).add(edge));
+            }
+        }
+        doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
+        corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
+        return b.build();
+    }
+
+    /**
+     * The doors traffic control opens and closes for the robots: every door on the map but the fire door, which
+     * is closed for a reason a robot must not override (a robot facing it closed fails its move, and re-plans).
+     */
+    public static List<String> keptDoors(HospitalFloor floor) {
+        TrafficMap map = map(floor);
+        return map.resources().stream().filter(r -> r.kind() == Kind.DOOR && !r.id().equals(HospitalFloor.FIRE_DOOR)).map(r -> r.id()).toList();
+    }
+
+    /** The corridor the route's inner stretch (between its corner waypoints) runs through, if it has corners. */
+    private static Optional<String> corridorRoundCorners(FloorPlan plan, List<String> route) {
+        if (route.size() < 4) {
+            return Optional.empty();
+        }
+        Vec2 p = plan.waypoint(route.get(1)).position();
+        Vec2 q = plan.waypoint(route.get(route.size() - 2)).position();
+        return plan.roomAt(new Vec2((p.x() + q.x()) / 2, (p.y() + q.y()) / 2)).filter(Room::corridor).map(Room::name);
+    }
+}

@@ -1,0 +1,286 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.triad.building.traffic.Resource.Kind;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.building.traffic.TrafficStats;
+import org.triad.examples.hospital.HospitalFloor;
+import org.triad.vda5050.broker.MosquittoBroker;
+import org.triad.vda5050.devices.DeviceLink;
+import org.triad.vda5050.master.DoorKeeper;
+import org.triad.vda5050.master.MasterControl;
+import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
+import org.triad.vda5050.master.VdaTimeouts;
+import org.triad.vda5050.protocol.AgvState;
+
+/**
+ * Traffic in the dyn4j building (issue #21's "Measured"): N couriers in ONE simulated hospital ({@code ./triad robot
+ * --count N}, its own JVM, a real Mosquitto), each doing random deliveries (to a random room, then to another) and
+ * patrols (three random corridor waypoints) for a stretch of simulated time, once under traffic control
+ * ({@link TrafficControl} over {@link HospitalTraffic}'s map, doors kept by a {@link DoorKeeper}) and once without
+ * (each edge driven at once: the robots meet in the building). Prints one row per fleet and mode: physical contacts
+ * the building reported, standstills (60 simulated seconds in which no courier with a task reached a node), tasks
+ * completed per simulated hour, drives that failed, waits for doors and corridors/lanes (median, p95, max, in
+ * simulated seconds) and the master's CPU (this JVM: master control, traffic control, the couriers' loops).
+ * One floor: the hospital's second floor and its lift are issue #20's (branch floors); guides need people and are
+ * left out.
+ *
+ * <pre>
+ * mvn -B -q -pl models/hospital -am package -DskipTests
+ * java -cp "$(cat models/hospital/target/classpath.txt):models/hospital/target/classes:models/hospital/target/test-classes" \
+ *     org.triad.examples.hospital.vda5050.BuildingTrafficBenchmark [simulated-minutes=30] [speed=10] [fleets=2,5,10,20] [seed=1] [both|reserved|unreserved]
+ * </pre>
+ */
+public final class BuildingTrafficBenchmark {
+    private static final Pattern SIMULATED = Pattern.compile("building: ([0-9.]+) s simulated in ([0-9.]+) s");
+    /**
+     * The rooms deliveries go to: all but the lobby, where the couriers start parked (a courier arriving there would
+     * drive onto the lobby's waypoint among them).
+     */
+    private static final List<String> DESTINATIONS = HospitalFloor.ROOMS.stream().filter(r -> !r.equals(HospitalFloor.ROBOT_START)).toList();
+    /** A standstill: this many simulated seconds in which no courier with a task reached a node. */
+    private static final double STANDSTILL = 60;
+
+    private record Row(int robots, boolean reserved, int contacts, int standstills, double simHours, long tasks, long failed, List<Double> doorWaits,
+            List<Double> laneWaits, double cpuSeconds, long routes) {
+    }
+
+    public static void main(String[] args) throws Exception {
+        double minutes = args.length > 0 ? Double.parseDouble(args[0]) : 30;
+        double speed = args.length > 1 ? Double.parseDouble(args[1]) : 10;
+        List<Integer> fleets = new ArrayList<>();
+        for (String f : (args.length > 2 ? args[2] : "2,5,10,20").split(",")) {
+            fleets.add(Integer.parseInt(f.trim()));
+        }
+        long seed = args.length > 3 ? Long.parseLong(args[3]) : 1;
+        String modes = args.length > 4 ? args[4] : "both";
+        List<Boolean> reservations = switch (modes) {
+            case "both" -> List.of(true, false);
+            case "reserved" -> List.of(true);
+            case "unreserved" -> List.of(false);
+            default -> throw new IllegalArgumentException("modes is both, reserved or unreserved, not '" + modes + "'");
+        };
+        List<Row> rows = new ArrayList<>();
+        for (int n : fleets) {
+            for (boolean reserved : reservations) {
+                Row r = run(n, reserved, minutes, speed, seed);
+                rows.add(r);
+                System.err.println(format(r));
+            }
+        }
+        System.out.printf(Locale.ROOT, "%n%d simulated minutes per run at %.0fx real time, seed %d, one floor of the dyn4j hospital%n", (long) minutes,
+                speed, seed);
+        System.out.println("| robots | reservations | contacts | standstills | tasks/sim-h | failed drives | door waits med/p95/max s | corridor+lane waits med/p95/max s | master CPU ms per robot per sim-min | master CPU ms per route |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+        rows.forEach(r -> System.out.println(format(r)));
+    }
+
+    private static String format(Row r) {
+        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.1f | %d | %s | %s | %.1f | %.2f |", r.robots, r.reserved ? "yes" : "no", r.contacts,
+                r.standstills, r.tasks / r.simHours, r.failed, waits(r.doorWaits, r.reserved), waits(r.laneWaits, r.reserved),
+                r.cpuSeconds * 1000 / r.robots / (r.simHours * 60), r.routes == 0 ? 0 : r.cpuSeconds * 1000 / r.routes);
+    }
+
+    private static String waits(List<Double> w, boolean reserved) {
+        if (!reserved) {
+            return "-";
+        }
+        if (w.isEmpty()) {
+            return "none";
+        }
+        return String.format(Locale.ROOT, "%.1f/%.1f/%.1f (%d)", TrafficStats.quantile(w, 0.5), TrafficStats.quantile(w, 0.95), Collections.max(w),
+                w.size());
+    }
+
+    private static Row run(int n, boolean reserved, double minutes, double speed, long seed) throws Exception {
+        Path dir = Files.createTempDirectory("traffic-benchmark");
+        TrafficMap map = HospitalTraffic.map(new HospitalFloor());
+        List<String> log = Collections.synchronizedList(new ArrayList<>());
+        try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
+                AgvProcess building = AgvProcess.building(broker.url(), n, speed, dir);
+                MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), log::add);
+                DeviceLink doorLink = DeviceLink.connect(broker.url(), "benchmark-doors", log::add);
+                DoorKeeper keeper = new DoorKeeper(doorLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, log::add)) {
+            // the table runs on the wall clock: a courier may wait 120 simulated seconds at the building's pace
+            TrafficControl traffic = new TrafficControl(map, 120 / speed, log::add);
+            if (reserved) {
+                traffic.keepDoors(keeper);
+            }
+            List<RemoteAgv> agvs = new ArrayList<>();
+            for (int i = 1; i <= n; i++) {
+                RemoteAgv a = master.agv("courier-" + i);
+                if (!a.awaitOnline()) {
+                    throw new IllegalStateException("courier-" + i + " not online: " + building.output());
+                }
+                agvs.add(a);
+            }
+            AtomicBoolean running = new AtomicBoolean(true);
+            AtomicLong tasks = new AtomicLong();
+            AtomicLong failed = new AtomicLong();
+            AtomicLong routes = new AtomicLong();
+            Map<String, Long> lastProgress = new ConcurrentHashMap<>();
+            Map<String, Boolean> busy = new ConcurrentHashMap<>();
+            long cpu0 = cpuNanos();
+            long start = System.nanoTime();
+            List<Thread> threads = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                RemoteAgv agv = agvs.get(i);
+                Random random = new Random(seed * 1000 + i);
+                long delay = i == 0 ? 0 : 3000; // courier-1 starts on the lobby's dock, in the others' way out: it leaves first
+                Thread t = new Thread(() -> {
+                    sleep(delay);
+                    while (running.get()) {
+                        List<String> stops = new ArrayList<>();
+                        if (random.nextInt(3) < 2) { // a delivery: to a room, then to another
+                            stops.add(pick(DESTINATIONS, random));
+                            stops.add(pick(DESTINATIONS, random));
+                        } else { // a patrol
+                            for (int k = 0; k < 3; k++) {
+                                stops.add(pick(HospitalFloor.CORRIDOR_WAYPOINTS, random));
+                            }
+                        }
+                        busy.put(agv.name(), true);
+                        boolean ok = true;
+                        for (String stop : stops) {
+                            String from = where(agv);
+                            if (from.equals(stop)) {
+                                continue;
+                            }
+                            List<String> path = path(map, from, stop);
+                            routes.incrementAndGet();
+                            ok = reserved ? agv.driveRoute(path, traffic) : driveEdges(agv, path);
+                            lastProgress.put(agv.name(), System.nanoTime());
+                            if (!ok) {
+                                if (failed.incrementAndGet() <= 10) {
+                                    System.err.println("failed: " + agv.lastFailure().orElse("?"));
+                                }
+                                sleep(1000);
+                                break;
+                            }
+                        }
+                        busy.put(agv.name(), false);
+                        if (ok && running.get()) {
+                            tasks.incrementAndGet();
+                        }
+                    }
+                }, "bench-" + agv.name());
+                threads.add(t);
+                t.start();
+            }
+            long end = start + (long) (minutes * 60 / speed * 1e9);
+            int standstills = 0;
+            long stillSince = System.nanoTime();
+            Map<String, String> lastNode = new HashMap<>();
+            while (System.nanoTime() < end) {
+                Thread.sleep(200);
+                boolean moved = false;
+                for (RemoteAgv a : agvs) {
+                    String node = a.state().map(AgvState::lastNodeId).orElse("");
+                    moved |= !node.equals(lastNode.put(a.name(), node)) && busy.getOrDefault(a.name(), false);
+                }
+                if (moved || busy.values().stream().noneMatch(b -> b)) {
+                    stillSince = System.nanoTime();
+                } else if ((System.nanoTime() - stillSince) / 1e9 * speed > STANDSTILL) {
+                    standstills++;
+                    System.err.println("standstill (" + n + " robots, reserved " + reserved + "): " + traffic.waits());
+                    stillSince = System.nanoTime();
+                }
+            }
+            running.set(false);
+            double cpu = (cpuNanos() - cpu0) / 1e9;
+            for (Thread t : threads) {
+                t.join(120_000);
+            }
+            building.stop();
+            Matcher m = SIMULATED.matcher(building.output());
+            double simSeconds = (System.nanoTime() - start) / 1e9 * speed;
+            while (m.find()) {
+                simSeconds = Double.parseDouble(m.group(1));
+            }
+            int contacts = building.lines("contact courier-").size();
+            List<Double> doorWaits = new ArrayList<>();
+            List<Double> laneWaits = new ArrayList<>();
+            traffic.read(t -> {
+                // the table's clock is the wall clock: its waits in simulated seconds at the building's pace
+                t.stats().waits(Kind.DOOR).forEach(w -> doorWaits.add(w * speed));
+                for (Kind k : List.of(Kind.CORRIDOR, Kind.EDGE, Kind.NODE, Kind.ZONE)) {
+                    t.stats().waits(k).forEach(w -> laneWaits.add(w * speed));
+                }
+                return null;
+            });
+            return new Row(n, reserved, contacts, standstills, simSeconds / 3600, tasks.get(), failed.get(), doorWaits, laneWaits, cpu, routes.get());
+        }
+    }
+
+    /** The node the courier last passed, as it reports it: where its next order starts. */
+    private static String where(RemoteAgv agv) {
+        return agv.state().orElseThrow().lastNodeId();
+    }
+
+    private static boolean driveEdges(RemoteAgv agv, List<String> path) {
+        for (int i = 1; i < path.size(); i++) {
+            if (!agv.drive(path.get(i - 1), path.get(i))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static String pick(List<String> xs, Random random) {
+        return xs.get(random.nextInt(xs.size()));
+    }
+
+    /** A shortest path (in edges) on the traffic map. */
+    static List<String> path(TrafficMap map, String from, String to) {
+        Map<String, String> previous = new HashMap<>();
+        Deque<String> open = new ArrayDeque<>(List.of(from));
+        previous.put(from, from);
+        while (!open.isEmpty()) {
+            String x = open.poll();
+            if (x.equals(to)) {
+                break;
+            }
+            for (String y : map.neighbours(x).stream().sorted().toList()) {
+                if (previous.putIfAbsent(y, x) == null) {
+                    open.add(y);
+                }
+            }
+        }
+        List<String> path = new ArrayList<>();
+        for (String x = to; !x.equals(from); x = previous.get(x)) {
+            path.add(0, x);
+        }
+        path.add(0, from);
+        return path;
+    }
+
+    private static long cpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
