@@ -12,6 +12,7 @@ import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.sim.Battery;
 import org.triad.vda5050.devices.DeviceLink;
+import org.triad.vda5050.security.BrokerCredentials;
 import org.triad.sim.SimulationClock;
 import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
@@ -201,25 +202,22 @@ public final class HospitalAgvMain {
             building.stop();
             return 2;
         }
-        if (o.broker().startsWith("tcp://")) {
-            try {
-                deviceLink.set(DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line)));
-                BuildingDoors.serve(building, deviceLink.get());
-                out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
-                        + " answer requests on triad/devices/v1/doors/<name>/request");
-            } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
-                err.println("triad robot: " + e.getMessage());
-                agvs.forEach(SimulatedAgv::close);
-                agvs.clear();
-                DeviceLink d = deviceLink.getAndSet(null);
-                if (d != null) {
-                    d.close();
-                }
-                building.stop();
-                return 2;
+        try {
+            // on a secured broker as the building's identity, the only one the ACL lets answer for a device
+            deviceLink.set(DeviceLink.connect(o.broker(), BrokerCredentials.BUILDING, "triad-building-devices", line -> out.println(line)));
+            BuildingDoors.serve(building, deviceLink.get());
+            out.println("devices: doors " + clock.call(s -> s.doors().stream().map(d -> d.name()).toList())
+                    + " answer requests on triad/devices/v1/doors/<name>/request");
+        } catch (BrokerUnreachableException | IllegalArgumentException | IllegalStateException e) {
+            err.println("triad robot: " + e.getMessage());
+            agvs.forEach(SimulatedAgv::close);
+            agvs.clear();
+            DeviceLink d = deviceLink.getAndSet(null);
+            if (d != null) {
+                d.close();
             }
-        } else {
-            out.println("devices: not served on a secured broker yet (the device protocol runs on plain tcp:// brokers)");
+            building.stop();
+            return 2;
         }
         out.printf(Locale.ROOT, "building: one hospital, %d robot(s), one clock (%s)%n", agvs.size(), pace);
         try {
