@@ -20,12 +20,17 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
     private final StateSource view;
     private final ActionRunner runner;
 
-    ObservedRobot(SharedWorld world, FleetRobot robot) {
+    /**
+     * @param wholeBuilding whether the robot's platform observes the whole building: then what changed there since
+     *                      the building's last report is written into the world at every report, else only what
+     *                      changed while this robot acted
+     */
+    ObservedRobot(SharedWorld world, FleetRobot robot, boolean wholeBuilding) {
         this.world = world;
         this.robot = robot;
-        this.view = world.view(robot.stateSource());
-        ActionRunner own = robot.actionRunner();
         StateSource ownState = robot.stateSource();
+        this.view = wholeBuilding ? () -> world.follow(ownState) : world.view(ownState);
+        ActionRunner own = robot.actionRunner();
         this.runner = new ActionRunner() {
             @Override
             public Optional<String> violatedPrecondition(GroundAction action, State now) throws Exception {
@@ -34,6 +39,11 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
 
             @Override
             public boolean execute(GroundAction action) throws Exception {
+                if (wholeBuilding) {
+                    boolean ok = own.execute(action);
+                    world.follow(ownState);
+                    return ok;
+                }
                 State before = ownState.currentState();
                 boolean ok = own.execute(action);
                 world.observe(before, ownState.currentState());

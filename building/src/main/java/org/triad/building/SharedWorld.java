@@ -35,6 +35,8 @@ public final class SharedWorld {
     private final Map<Atom, Object> robotStart = new LinkedHashMap<>();
     private long version;
     private boolean seeded;
+    /** The last state a robot observing the whole building reported ({@link #follow}), null before the first. */
+    private State lastFollowed;
 
     /**
      * A building whose world is {@code situation}'s until something starts it otherwise ({@link #startAs},
@@ -169,14 +171,25 @@ public final class SharedWorld {
     /**
      * A robot with a platform of its own, as a member of this building: it reads its own robot-actor
      * values from the platform and the world from here, and what changes in the world while it acts
-     * (as its platform reports it) is written here.
+     * (as its platform reports it) is written here. A platform that observes the whole building
+     * ({@link FleetRobot#observesBuilding()}) is followed at every report instead ({@link #follow}); the first
+     * such report, taken when the first such robot joins, replaces the world (the building as it is wins over a
+     * situation file).
      */
     public FleetRobot observing(FleetRobot robot) {
         if (robot instanceof BuildingMember m && m.world() == this) {
             return robot;
         }
-        seedFrom(robot);
-        return new ObservedRobot(this, robot);
+        if (robot.observesBuilding()) {
+            try {
+                follow(robot.stateSource()); // its first report is the building's world
+            } catch (Exception unreadable) {
+                // read at its first use instead
+            }
+        } else {
+            seedFrom(robot);
+        }
+        return new ObservedRobot(this, robot, robot.observesBuilding());
     }
 
     /**
@@ -220,5 +233,27 @@ public final class SharedWorld {
     /** A robot's own state source seen through this building. */
     StateSource view(StateSource own) {
         return () -> stateFor(own.currentState());
+    }
+
+    /**
+     * Reads the state of a robot whose platform observes the whole building (every such robot of this world reports
+     * the same simulation) and writes what changed in the building since the last such report into the world; the
+     * first report is taken as the world. Read under the world's lock, so reports are applied in the order they were
+     * taken and a late, older one cannot undo a newer one; what robots without such a platform changed in between
+     * stays unless the building reports the same atoms changed. Returns the state the robot sees.
+     */
+    State follow(StateSource building) throws Exception {
+        synchronized (lock) {
+            State now = building.currentState();
+            now.objects().forEach(objects::putIfAbsent);
+            if (lastFollowed == null) {
+                replaceWorld(now);
+                seeded = true;
+            } else {
+                observe(lastFollowed, now);
+            }
+            lastFollowed = now;
+            return stateFor(now);
+        }
     }
 }

@@ -127,6 +127,56 @@ class SharedWorldTest {
         assertTrue(world.worldState().holds(itemAt("gauze", "storage")));
     }
 
+    /**
+     * Two couriers in one simulation (a platform that observes the whole building): what changed there is in the
+     * building at the next report, though neither of them acted; what a robot without a body there changed stays.
+     */
+    @Test
+    void aPlatformObservingTheWholeBuildingIsFollowedAtEveryReport() throws Exception {
+        SharedWorld world = new SharedWorld(schema, morning);
+        DryRunWorld simulation = new DryRunWorld(schema, morning);
+        FleetRobot p1 = world.observing(inSimulation("p1", simulation));
+        FleetRobot p2 = world.observing(inSimulation("p2", simulation));
+        ModelRobot bodiless = world.modelRobot("r3");
+        toStorage(bodiless);
+        assertTrue(bodiless.execute(new GroundAction("Courier", "pick", List.of(o("syringe"), o("storage")))));
+        // someone else in the simulation takes the bandage; neither p1 nor p2 acted
+        for (GroundAction a : List.of(move("lobby", "c4"), move("c4", "c1"), move("c1", "storage"),
+                new GroundAction("Courier", "pick", List.of(o("bandage"), o("storage"))))) {
+            assertTrue(simulation.execute(a));
+        }
+        assertTrue(world.worldState().holds(itemAt("bandage", "storage")), "not read yet");
+        assertFalse(p2.stateSource().currentState().holds(itemAt("bandage", "storage")), "the next report has it");
+        assertFalse(world.worldState().holds(itemAt("bandage", "storage")));
+        assertFalse(world.worldState().holds(itemAt("syringe", "storage")), "the bodiless robot's pick stays");
+        assertFalse(p1.stateSource().currentState().holds(itemAt("syringe", "storage")));
+        assertTrue(world.worldState().holds(itemAt("gauze", "storage")));
+    }
+
+    private static FleetRobot inSimulation(String name, DryRunWorld simulation) {
+        return new FleetRobot() {
+            @Override
+            public String name() {
+                return name;
+            }
+
+            @Override
+            public StateSource stateSource() {
+                return simulation;
+            }
+
+            @Override
+            public ActionRunner actionRunner() {
+                return simulation;
+            }
+
+            @Override
+            public boolean observesBuilding() {
+                return true;
+            }
+        };
+    }
+
     @Test
     void aTaskClaimsTheObjectsItNamesThatAreNotPlaces() {
         Claims claims = new Claims(schema);

@@ -33,6 +33,15 @@ public interface FleetRobot extends AutoCloseable {
         return Optional.empty();
     }
 
+    /**
+     * Whether this robot's platform observes the whole building (a simulation hosting every robot of the fleet):
+     * then the world part of the state it reports is the building's world as it is, and the fleet's world follows
+     * it instead of only what changed while the robot acted. Called once, when the robot joins.
+     */
+    default boolean observesBuilding() {
+        return false;
+    }
+
     /** Releases the connection or simulation; the default does nothing. */
     @Override
     default void close() {

@@ -15,11 +15,14 @@ import org.eclipse.paho.client.mqttv3.MqttMessage;
 import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
 import org.triad.vda5050.protocol.VdaJson;
+import org.triad.vda5050.security.ClientCredentials;
 
 /**
  * An MQTT connection for the device protocol ({@link DeviceMessages}): JSON messages on {@code triad/devices/v1/...},
- * QoS 1. A message that is not JSON of the expected shape is reported as one line and ignored. Plain {@code tcp://}
- * brokers only for now (the secured broker's ACL has no device topics yet).
+ * QoS 1. A message that is not JSON of the expected shape is reported as one line and ignored. On a secured broker
+ * ({@code ssl://}) it logs in as an identity from the credentials folder: the building's
+ * ({@link org.triad.vda5050.security.BrokerCredentials#BUILDING}) to serve devices, master control's or a robot's to
+ * ask them; the broker's ACL grants each only its side of the protocol.
  */
 public final class DeviceLink implements AutoCloseable {
     private final MqttClient client;
@@ -32,10 +35,24 @@ public final class DeviceLink implements AutoCloseable {
     }
 
     /**
+     * Connects to a plain broker ({@code tcp://HOST:PORT}).
+     *
      * @throws BrokerUnreachableException when no broker answers within 5 s
      * @throws IllegalArgumentException for an address that is not {@code tcp://HOST:PORT}
      */
     public static DeviceLink connect(String broker, String clientId, Consumer<String> problems) {
+        return connect(broker, null, clientId, problems);
+    }
+
+    /**
+     * Connects as {@code identity}: on a secured broker ({@code ssl://HOST:PORT}) with that identity's certificate and
+     * password from the credentials folder ({@link ClientCredentials#configuredFolder()}; the broker then uses the identity
+     * as the client id); on plain TCP the identity is not used.
+     *
+     * @throws BrokerUnreachableException when no broker answers within 5 s or the broker refuses the identity
+     * @throws IllegalArgumentException for an address that is not {@code tcp://} or {@code ssl://HOST:PORT}, or missing credentials
+     */
+    public static DeviceLink connect(String broker, String identity, String clientId, Consumer<String> problems) {
         Objects.requireNonNull(problems, "problems");
         URI uri;
         try {
@@ -43,15 +60,21 @@ public final class DeviceLink implements AutoCloseable {
         } catch (IllegalArgumentException e) {
             uri = null;
         }
-        if (uri == null || !"tcp".equals(uri.getScheme()) || uri.getHost() == null || uri.getPort() < 0) {
-            throw new IllegalArgumentException("the device protocol needs a plain broker address tcp://HOST:PORT, not '" + broker + "'");
+        if (uri == null || !("tcp".equals(uri.getScheme()) || "ssl".equals(uri.getScheme())) || uri.getHost() == null || uri.getPort() < 0) {
+            throw new IllegalArgumentException("the device protocol needs a broker address tcp://HOST:PORT or ssl://HOST:PORT, not '" + broker + "'");
+        }
+        MqttConnectOptions o = new MqttConnectOptions();
+        if ("ssl".equals(uri.getScheme())) {
+            ClientCredentials credentials = ClientCredentials.forBroker(broker, identity);
+            o.setUserName(credentials.identity());
+            o.setPassword(credentials.password());
+            o.setSocketFactory(credentials.socketFactory());
         }
         try {
             MqttClient c = new MqttClient(broker, clientId, new MemoryPersistence());
             c.setTimeToWait(2000);
             DeviceLink link = new DeviceLink(c, problems);
             c.setCallback(link.new Callback());
-            MqttConnectOptions o = new MqttConnectOptions();
             o.setCleanSession(true);
             o.setAutomaticReconnect(true);
             o.setMaxReconnectDelay(1000);

@@ -99,7 +99,7 @@ public final class MqttLink implements AutoCloseable {
         o.setConnectionTimeout((int) Math.max(1, Math.ceil(timeoutSeconds)));
         o.setMaxInflight(1000);
         if ("ssl".equals(uri.getScheme())) {
-            ClientCredentials c = secured(broker, identity);
+            ClientCredentials c = ClientCredentials.forBroker(broker, identity);
             o.setUserName(c.identity());
             o.setPassword(c.password());
             o.setSocketFactory(new NoDelaySslSocketFactory(c.socketFactory()));
@@ -143,16 +143,6 @@ public final class MqttLink implements AutoCloseable {
             throw new IllegalArgumentException("not a broker address: '" + broker + "' (expected ssl://HOST:PORT or tcp://HOST:PORT)");
         }
         return uri;
-    }
-
-    private static ClientCredentials secured(String broker, String identity) {
-        if (identity == null) {
-            throw new IllegalArgumentException("the secured broker " + broker + " needs the client's identity");
-        }
-        java.nio.file.Path dir = ClientCredentials.configuredFolder().orElseThrow(() -> new IllegalArgumentException(
-                "the secured broker " + broker + " needs credentials: --credentials DIR, or " + ClientCredentials.ENVIRONMENT
-                        + "=DIR (the folder ./triad broker made)"));
-        return ClientCredentials.load(dir, identity);
     }
 
     private static String reason(MqttException e) {

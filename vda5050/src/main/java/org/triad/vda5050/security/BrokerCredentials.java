@@ -32,13 +32,15 @@ import java.util.stream.Stream;
  * clients/NAME.password     NAME's MQTT password
  * </pre>
  *
- * The identity {@value #MASTER} is master control; every other identity is a robot whose serial number is its
- * name. A robot needs only {@code ca.crt} and its own two files under {@code clients/}. Secret files are
+ * The identity {@value #MASTER} is master control, {@value #BUILDING} the building serving its doors and lifts;
+ * every other identity is a robot whose serial number is its name. A robot needs only {@code ca.crt} and its own two files under {@code clients/}. Secret files are
  * mode 0600 and the folder 0700.
  */
 public final class BrokerCredentials {
     /** Master control's identity. */
     public static final String MASTER = "master";
+    /** The building's identity: it serves the doors and lifts (device protocol) and nobody else may. */
+    public static final String BUILDING = "building";
 
     private static final Pattern IDENTITY = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
     private static final SecureRandom RANDOM = new SecureRandom();
@@ -66,6 +68,9 @@ public final class BrokerCredentials {
             if (r.equals(MASTER)) {
                 throw new IllegalArgumentException("'" + MASTER + "' is master control's identity, not a robot's serial number");
             }
+            if (r.equals(BUILDING)) {
+                throw new IllegalArgumentException("'" + BUILDING + "' is the building's identity (its doors and lifts), not a robot's serial number");
+            }
         }
         Path d = dir.toAbsolutePath();
         SecretFiles.privateFolder(d);
@@ -88,6 +93,7 @@ public final class BrokerCredentials {
         }
         List<String> wanted = new ArrayList<>();
         wanted.add(MASTER);
+        wanted.add(BUILDING);
         wanted.addAll(robots);
         for (String identity : wanted) {
             if (!Files.exists(password(d, identity)) || !Files.exists(keyStore(d, identity))) {
@@ -189,7 +195,8 @@ public final class BrokerCredentials {
         }
         SecretFiles.write(passwordFile(), plain.toString());
         hashPasswords(passwordFile());
-        SecretFiles.write(aclFile(), AccessControlList.of(manufacturer, ids.stream().filter(i -> !i.equals(MASTER)).toList()));
+        SecretFiles.write(aclFile(), AccessControlList.of(manufacturer,
+                ids.stream().filter(i -> !i.equals(MASTER) && !i.equals(BUILDING)).toList()));
     }
 
     /** Mosquitto's own tool hashes the file in place, in the format the installed broker reads. */

@@ -48,6 +48,21 @@ public final class ClientCredentials {
     }
 
     /**
+     * The credentials {@code identity} logs in to the secured broker {@code broker} with, from the configured folder
+     * ({@link #configuredFolder()}).
+     *
+     * @throws IllegalArgumentException without an identity, without a configured folder, or when the identity's files are missing
+     */
+    public static ClientCredentials forBroker(String broker, String identity) {
+        if (identity == null) {
+            throw new IllegalArgumentException("the secured broker " + broker + " needs the client's identity");
+        }
+        Path dir = configuredFolder().orElseThrow(() -> new IllegalArgumentException("the secured broker " + broker
+                + " needs credentials: --credentials DIR, or " + ENVIRONMENT + "=DIR (the folder ./triad broker made)"));
+        return load(dir, identity);
+    }
+
+    /**
      * Reads {@code identity}'s credentials from the folder.
      *
      * @throws IllegalArgumentException naming the missing file and how to make it
@@ -60,7 +75,9 @@ public final class ClientCredentials {
         for (Path p : new Path[] { ca, pw, ks }) {
             if (!Files.isReadable(p)) {
                 throw new IllegalArgumentException("no credentials for '" + identity + "' in " + dir.toAbsolutePath() + ": " + p.getFileName()
-                        + " is missing (./triad broker --credentials " + dir + " --robots " + identity + " makes them)");
+                        + " is missing (./triad broker --credentials " + dir
+                        + (BrokerCredentials.MASTER.equals(identity) || BrokerCredentials.BUILDING.equals(identity) ? "" : " --robots " + identity)
+                        + " makes them)");
             }
         }
         return new ClientCredentials(identity, readPassword(pw).toCharArray(), ks, ca);

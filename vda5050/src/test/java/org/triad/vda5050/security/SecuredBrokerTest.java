@@ -24,6 +24,8 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.triad.vda5050.broker.MosquittoBroker;
+import org.triad.vda5050.devices.DeviceLink;
+import org.triad.vda5050.devices.DeviceMessages;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
 import org.triad.vda5050.mqtt.MqttLink;
 import org.triad.vda5050.mqtt.Received;
@@ -65,7 +67,7 @@ class SecuredBrokerTest {
 
     @Test
     void theFolderIsMadeOnceAndKeepsWhatExists() throws Exception {
-        assertEquals(List.of("courier-1", "courier-2", "master"), credentials.identities());
+        assertEquals(List.of("building", "courier-1", "courier-2", "master"), credentials.identities());
         String caBefore = Files.readString(credentials.caCertificate());
         String pwBefore = Files.readString(root.resolve("credentials/clients/courier-1.password"));
         BrokerCredentials again = BrokerCredentials.ensure(root.resolve("credentials"), M, List.of("courier-1", "courier-3"));
@@ -81,6 +83,59 @@ class SecuredBrokerTest {
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
                 () -> BrokerCredentials.ensure(root.resolve("credentials"), M, List.of("a/b")));
         assertTrue(bad.getMessage().contains("not 'a/b'"), bad.getMessage());
+        IllegalArgumentException reserved = assertThrows(IllegalArgumentException.class,
+                () -> BrokerCredentials.ensure(root.resolve("credentials"), M, List.of(BrokerCredentials.BUILDING)));
+        assertTrue(reserved.getMessage().contains("the building's identity"), reserved.getMessage());
+    }
+
+    /**
+     * The device protocol on the secured broker: only the building's identity reads the requests and answers with
+     * a device's state; a robot and master control ask and watch. A robot that forges a door's state, or listens to
+     * what others ask, gets nothing through.
+     */
+    @Test
+    void onlyTheBuildingAnswersForADevice() throws Exception {
+        List<DeviceMessages.DoorRequest> buildingGot = new CopyOnWriteArrayList<>();
+        List<DeviceMessages.DoorRequest> spyGot = new CopyOnWriteArrayList<>();
+        List<DeviceMessages.DoorState> robotGot = new CopyOnWriteArrayList<>();
+        List<DeviceMessages.DoorState> masterGot = new CopyOnWriteArrayList<>();
+        List<String> problems = new CopyOnWriteArrayList<>();
+        String request = DeviceMessages.doorRequestTopic("fireDoor");
+        String state = DeviceMessages.doorStateTopic("fireDoor");
+        java.util.concurrent.ExecutorService answers = java.util.concurrent.Executors.newSingleThreadExecutor();
+        try (DeviceLink building = DeviceLink.connect(broker.url(), BrokerCredentials.BUILDING, "devices-building", problems::add);
+                DeviceLink robot = DeviceLink.connect(broker.url(), "courier-1", "devices-courier-1", problems::add);
+                DeviceLink other = DeviceLink.connect(broker.url(), "courier-2", "devices-courier-2", problems::add);
+                DeviceLink master = DeviceLink.connect(broker.url(), BrokerCredentials.MASTER, "devices-master", problems::add)) {
+            // answered off the MQTT callback thread, as the building does (a blocking publish there would wait for itself)
+            building.subscribe(request, DeviceMessages.DoorRequest.class, r -> {
+                buildingGot.add(r);
+                answers.execute(() -> building.publish(state,
+                        new DeviceMessages.DoorState("fireDoor", DeviceMessages.OPEN, r.requestId(), null, HeaderIds.now()), true));
+            });
+            other.subscribe(request, DeviceMessages.DoorRequest.class, spyGot::add);
+            robot.subscribe(state, DeviceMessages.DoorState.class, robotGot::add);
+            master.subscribe(state, DeviceMessages.DoorState.class, masterGot::add);
+
+            // courier-2 answers for the door (dropped: it is not the building) and asks as the building would answer
+            other.publish(state, new DeviceMessages.DoorState("fireDoor", DeviceMessages.CLOSED, "forged", null, HeaderIds.now()), true);
+            building.publish(request, new DeviceMessages.DoorRequest("building-asks", "building", "fireDoor", DeviceMessages.CLOSED, HeaderIds.now()), false);
+            // then courier-1 asks, and master control after it
+            robot.publish(request, new DeviceMessages.DoorRequest("r1", "courier-1", "fireDoor", DeviceMessages.OPEN, HeaderIds.now()), false);
+            master.publish(request, new DeviceMessages.DoorRequest("m1", "master", "fireDoor", DeviceMessages.OPEN, HeaderIds.now()), false);
+            long end = System.nanoTime() + 60_000_000_000L;
+            while (!(robotGot.stream().anyMatch(d -> "m1".equals(d.lastRequestId())) && masterGot.stream().anyMatch(d -> "m1".equals(d.lastRequestId())))
+                    && System.nanoTime() < end) {
+                Thread.sleep(25);
+            }
+            assertEquals(List.of("r1", "m1"), buildingGot.stream().map(DeviceMessages.DoorRequest::requestId).toList());
+            assertEquals(List.of("r1", "m1"), robotGot.stream().map(DeviceMessages.DoorState::lastRequestId).toList(), "no forged state");
+            assertEquals(List.of("r1", "m1"), masterGot.stream().map(DeviceMessages.DoorState::lastRequestId).toList());
+            assertEquals(List.of(), spyGot, "a robot does not read what others ask");
+            assertEquals(List.of(), problems);
+        } finally {
+            answers.shutdownNow();
+        }
     }
 
     @Test

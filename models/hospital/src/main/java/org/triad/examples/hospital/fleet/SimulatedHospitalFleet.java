@@ -4,25 +4,29 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.refarc.fleet.FleetContext;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.RobotPlatformProvider;
 
 /**
- * Scheme {@code sim} of the hospital application: {@code sim:N} connects N simulated couriers, each in
- * a hospital simulation of its own (the models' Morning situation), paced at 10 simulated seconds per
- * wall-clock second so that people can follow them on a map; {@code sim:N@S} paces at S times real
- * time, {@code sim:N@max} runs as fast as the machine can.
- *
- * <p>One simulation per robot, not one shared: the simulation advances virtual time inside a robot's
- * blocking action and is not thread-safe, so robots sharing one would have to take turns step by step
- * instead of working in parallel, and one robot's fault scenario would disturb the others.
+ * Scheme {@code sim} of the hospital application: {@code sim:N} connects N simulated couriers in one simulated
+ * hospital (one dyn4j simulation of the models' Morning situation with its own clock, the same building as
+ * {@code ./triad robot --count N} puts on a broker): one gauze, Alice in one room, robots that meet in the
+ * corridors. The clock runs at 10 simulated seconds per wall-clock second so that people can follow the robots on
+ * a map; {@code sim:N@S} paces at S times real time, {@code sim:N@max} runs as fast as the machine can. Couriers
+ * are named {@code sim-1} to {@code sim-N}; the first starts at the lobby's waypoint, the others park along the
+ * walls of the lobby and then of other rooms. One {@code sim:} spec per service: it is the building.
  */
 public final class SimulatedHospitalFleet implements RobotPlatformProvider {
     /** Simulated seconds per wall-clock second unless the argument says otherwise. */
     public static final double DEFAULT_SPEED = 10;
     /** More robots than this is a typo, not a fleet. */
     public static final int MAX_ROBOTS = 100;
+    /** The seed of the people's choices: the same service, the same building. */
+    static final long SEED = 1;
+    /** Whether this provider made the building already (the service loads its providers once). */
+    private boolean connected;
 
     @Override
     public String application() {
@@ -36,7 +40,7 @@ public final class SimulatedHospitalFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "sim:N[@SPEED|@max]  N simulated hospital couriers, each on its own floor (default speed "
+        return "sim:N[@SPEED|@max]  N simulated hospital couriers in one simulated hospital (default speed "
                 + (int) DEFAULT_SPEED + "x real time)";
     }
 
@@ -64,9 +68,18 @@ public final class SimulatedHospitalFleet implements RobotPlatformProvider {
                 throw new IllegalArgumentException("sim:N@SPEED needs a speed above 0, not " + parts[1]);
             }
         }
-        List<FleetRobot> robots = new ArrayList<>();
+        if (connected) {
+            throw new IllegalArgumentException("the simulated hospital is one building: give all its couriers in one sim:N");
+        }
+        List<String> names = new ArrayList<>();
         for (int i = 1; i <= n; i++) {
-            robots.add(new SimulatedHospitalRobot("sim-" + i, i, speed));
+            names.add("sim-" + i);
+        }
+        SimulatedHospital hospital = new SimulatedHospital(SEED, names, speed);
+        connected = true;
+        List<FleetRobot> robots = new ArrayList<>();
+        for (HospitalBuilding.Courier c : hospital.building().couriers()) {
+            robots.add(new SimulatedHospitalRobot(hospital, c));
         }
         return robots;
     }

@@ -3,12 +3,17 @@ package org.triad.examples.hospital.fleet;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 
+import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.examples.hospital.HospitalSimulation;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
+import org.triad.runtime.app.State;
+import org.triad.runtime.app.GroundAction;
+import org.triad.refarc.fleet.Battery;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.FloorMap;
 import org.triad.refarc.fleet.Pose;
@@ -20,6 +25,7 @@ import org.triad.sim.Rect;
 import org.triad.sim.Robot;
 import org.triad.sim.Room;
 import org.triad.sim.Simulation;
+import org.triad.sim.SimulationClock;
 import org.triad.sim.Wall;
 import org.triad.sim.Waypoint;
 
@@ -27,36 +33,61 @@ import generated.hospital.HospitalActionExecutor;
 import generated.hospital.HospitalStateProvider;
 
 /**
- * A courier in a hospital simulation of its own, driven by the generated StateProvider and
- * ActionExecutor. The simulation is stepped by the robot's actions; after each step this robot paces
- * virtual time against the wall clock and, every {@value #MAP_EVERY_STEPS} steps, takes a new floor map
- * on the stepping thread, so that other threads read a finished picture instead of a simulation in motion.
+ * One courier of the service's simulated hospital ({@link SimulatedHospital}: one dyn4j simulation for the whole
+ * fleet), driven by the generated StateProvider and ActionExecutor over the courier's own {@code IRobot} and
+ * {@code IWorld} implementations. The building's clock steps the simulation; this robot reads its state and runs
+ * its actions under the clock's lock (a blocking action releases it while it waits), so every robot sees the one
+ * world as it is between two steps, and many drive at the same time.
  */
 final class SimulatedHospitalRobot implements FleetRobot {
-    private static final int MAP_EVERY_STEPS = 6;
-    /** After this much lag (s) pacing starts afresh instead of letting the simulation rush to catch up. */
-    private static final double MAX_LAG = 0.25;
-
     private final String name;
-    private final HospitalSimulation hospital;
+    private final SimulatedHospital hospital;
+    private final HospitalBuilding.Courier courier;
     private final StateSource stateSource;
     private final ActionRunner actionRunner;
-    private final double speed;
-    private volatile FloorMap map;
-    private long markWallNanos;
-    private double markSim;
+    private boolean closed;
 
-    SimulatedHospitalRobot(String name, long seed, double speed) {
-        this.name = name;
-        this.speed = speed;
-        this.hospital = new HospitalSimulation(seed, false);
-        this.stateSource = new HospitalStateProvider(hospital.courier(), hospital.building());
-        this.actionRunner = new HospitalActionExecutor(hospital.courier(), hospital.building());
-        Simulation sim = hospital.sim();
-        map = snapshot(sim, name);
-        markWallNanos = System.nanoTime();
-        markSim = sim.time();
-        sim.addStepListener(this::afterStep);
+    SimulatedHospitalRobot(SimulatedHospital hospital, HospitalBuilding.Courier courier) {
+        this.name = courier.name();
+        this.hospital = hospital;
+        this.courier = courier;
+        SimulationClock clock = hospital.clock();
+        HospitalStateProvider state = new HospitalStateProvider(courier.robotActor(), courier.worldActor());
+        HospitalActionExecutor executor = new HospitalActionExecutor(courier.robotActor(), courier.worldActor());
+        this.stateSource = () -> clock.call(s -> state.currentState());
+        this.actionRunner = new ActionRunner() {
+            @Override
+            public Optional<String> violatedPrecondition(GroundAction action, State now) throws Exception {
+                return underLock(clock, () -> executor.violatedPrecondition(action, now));
+            }
+
+            @Override
+            public boolean execute(GroundAction action) throws Exception {
+                return underLock(clock, () -> executor.execute(action));
+            }
+
+            @Override
+            public Optional<String> failureReason(GroundAction action) {
+                return clock.call(s -> executor.failureReason(action));
+            }
+        };
+    }
+
+    /** Runs {@code body} under the clock's lock, passing its checked exception on. */
+    private static <T> T underLock(SimulationClock clock, Callable<T> body) throws Exception {
+        Exception[] thrown = new Exception[1];
+        T value = clock.call(s -> {
+            try {
+                return body.call();
+            } catch (Exception e) {
+                thrown[0] = e;
+                return null;
+            }
+        });
+        if (thrown[0] != null) {
+            throw thrown[0];
+        }
+        return value;
     }
 
     @Override
@@ -74,42 +105,40 @@ final class SimulatedHospitalRobot implements FleetRobot {
         return actionRunner;
     }
 
+    /** The simulation is the whole building: what this robot reports of the world is the fleet's world. */
+    @Override
+    public boolean observesBuilding() {
+        return true;
+    }
+
     @Override
     public Optional<FloorMap> floor() {
-        return Optional.of(map);
-    }
-
-    /** The simulation, for tests and fault scenarios (script faults with {@code sim().at(t)} before tasks run). */
-    HospitalSimulation hospital() {
-        return hospital;
-    }
-
-    private void afterStep() {
-        Simulation sim = hospital.sim();
-        if (sim.steps() % MAP_EVERY_STEPS == 0) {
-            map = snapshot(sim, name);
-        }
-        if (Double.isInfinite(speed)) {
-            return;
-        }
-        long now = System.nanoTime();
-        double due = (sim.time() - markSim) / speed - (now - markWallNanos) / 1e9;
-        if (due < -MAX_LAG) {
-            markWallNanos = now;
-            markSim = sim.time();
-        } else if (due > 0) {
-            try {
-                Thread.sleep((long) (due * 1000), (int) ((due * 1e9) % 1_000_000));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        return Optional.of(hospital.map());
     }
 
     @Override
     public Optional<Pose> pose() {
-        return map.robots().stream().filter(m -> m.name().equals(name)).findFirst()
+        return hospital.map().robots().stream().filter(m -> m.name().equals(name)).findFirst()
                 .map(m -> new Pose(m.x(), m.y(), 0, org.triad.examples.hospital.vda5050.SimulatedAgv.MAP_ID));
+    }
+
+    @Override
+    public Optional<Battery> battery() {
+        org.triad.sim.Battery b = courier.robot().battery();
+        return Optional.of(hospital.clock().call(s -> new Battery(b.percent(), b.isCharging())));
+    }
+
+    /** The building, for tests and fault scenarios ({@code building().clock()}). */
+    HospitalBuilding building() {
+        return hospital.building();
+    }
+
+    @Override
+    public synchronized void close() {
+        if (!closed) {
+            closed = true;
+            hospital.release();
+        }
     }
 
     /**
@@ -117,12 +146,12 @@ final class SimulatedHospitalRobot implements FleetRobot {
      * are but draw no map (VDA 5050 couriers): the same rooms, walls, doors and waypoints as the simulation's.
      */
     static FloorMap layout() {
-        FloorMap m = snapshot(new HospitalSimulation(0, false).sim(), "");
+        FloorMap m = snapshot(new HospitalSimulation(0, false).sim());
         return new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), List.of(), List.of(), List.of());
     }
 
-    /** The floor now; the courier is labelled with its name in the fleet. */
-    private static FloorMap snapshot(Simulation sim, String fleetName) {
+    /** The floor now, with every robot under its name in the simulation (call it between two steps). */
+    static FloorMap snapshot(Simulation sim) {
         FloorPlan plan = sim.plan();
         List<FloorMap.Area> areas = new ArrayList<>();
         for (Room r : plan.rooms()) {
@@ -145,7 +174,7 @@ final class SimulatedHospitalRobot implements FleetRobot {
         }
         List<FloorMap.Mark> robots = new ArrayList<>();
         for (Robot r : sim.robots()) {
-            robots.add(new FloorMap.Mark(r.name().equals(HospitalSimulation.ROBOT) ? fleetName : r.name(), r.position().x(), r.position().y(),
+            robots.add(new FloorMap.Mark(r.name(), r.position().x(), r.position().y(),
                     r.carried().stream().map(Item::name).collect(Collectors.joining(", "))));
         }
         List<FloorMap.Mark> items = new ArrayList<>();

@@ -33,7 +33,9 @@ import generated.hospital.HospitalStateProvider;
 /**
  * Scheme {@code vda5050} of the hospital application: {@code vda5050:tcp://HOST:PORT[,wait=S][,allow=P+P]}
  * drives every hospital courier (manufacturer {@code triad}) that is ONLINE on that broker, found on the
- * {@code connection} topic within S seconds (default 2), and those that come later, through one
+ * {@code connection} topic within S seconds (default 2; a larger S is an upper bound for a slow broker or machine:
+ * once a courier has joined and every announced one is decided, the start waits no longer than the default), and
+ * those that come later, through one
  * {@link MasterControl} and its {@link AgvDiscovery}: an AGV must publish a factsheet listing the actions
  * the couriers are sent ({@link #REQUIRED_ACTIONS}), report a state on a waypoint of the hospital and,
  * with {@code allow}, have a serial number matching one of the patterns ({@code *} for any characters);
@@ -112,8 +114,12 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         Roster roster = new Roster(master, context.changes(), traffic);
         AgvDiscovery discovery = new AgvDiscovery(master, new AgvDiscovery.Requirements(MasterControl.TRIAD, allowed, REQUIRED_ACTIONS,
                 Math.max(wait, FACTSHEET_SECONDS), timeouts.reconnectGraceSeconds()), roster, line -> System.err.println("triad serve: " + line));
-        long deadline = System.nanoTime() + (long) (wait * 1e9);
-        while (System.nanoTime() < deadline) {
+        long start = System.nanoTime();
+        long deadline = start + (long) (wait * 1e9);
+        // a long wait is for a slow machine or broker (a retained ONLINE can take seconds to arrive under load):
+        // it ends early once a courier is there, but never before the default, so that couriers announced together join together
+        long enough = start + (long) (Math.min(wait, DEFAULT_WAIT_SECONDS) * 1e9);
+        while (System.nanoTime() < deadline && !(System.nanoTime() >= enough && roster.anyJoined() && discovery.settled())) {
             Thread.sleep(50);
         }
         // the AGVs announced by then are decided on before the service starts (their first state may be a moment late)
@@ -246,6 +252,11 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             early = null;
             first.sort(java.util.Comparator.comparing(FleetRobot::name)); // fleet order by name, not by who answered first
             return first;
+        }
+
+        /** Whether a courier has joined before the hand-over. */
+        synchronized boolean anyJoined() {
+            return early != null && !early.isEmpty();
         }
 
         synchronized String refusals() {

@@ -12,6 +12,7 @@ import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.sim.Battery;
 import org.triad.vda5050.devices.DeviceLink;
+import org.triad.vda5050.security.BrokerCredentials;
 import org.triad.sim.SimulationClock;
 import org.triad.runtime.app.LauncherWatch;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
@@ -230,9 +231,10 @@ public final class HospitalAgvMain {
         }
         if (!o.devices()) {
             out.println("devices: off (--devices off): the building's doors and lift answer no request");
-        } else if (o.broker().startsWith("tcp://")) {
+        } else {
             try {
-                deviceLink.set(DeviceLink.connect(o.broker(), "triad-building-devices", line -> out.println(line)));
+                // on a secured broker as the building's identity, the only one the ACL lets answer for a device
+                deviceLink.set(DeviceLink.connect(o.broker(), BrokerCredentials.BUILDING, "triad-building-devices", line -> out.println(line)));
                 BuildingDoors.serve(building, deviceLink.get());
                 BuildingLifts.serve(building, deviceLink.get());
                 out.println("devices: doors " + BuildingDoors.served(clock) + " answer requests on triad/devices/v1/doors/<name>/request, lifts "
@@ -248,8 +250,6 @@ public final class HospitalAgvMain {
                 building.stop();
                 return 2;
             }
-        } else {
-            out.println("devices: not served on a secured broker yet (the device protocol runs on plain tcp:// brokers)");
         }
         out.printf(Locale.ROOT, "building: one hospital, %d robot(s), one clock (%s)%n", agvs.size(), pace);
         try {

@@ -427,6 +427,9 @@ public final class SimulatedAgv implements AutoCloseable {
                 error(typeAndWhy[0], typeAndWhy.length > 1 ? typeAndWhy[1] : why, List.of(new Reference("orderId", order),
                         new Reference("edgeId", e.edgeId())));
                 log.accept("agv " + serial + ": edge " + e.edgeId() + " of order " + order + " failed: " + why);
+                // stopped on the way (blocked, timed out): it is no longer at the edge's start node, and the courier
+                // refuses any move that does not start where it is; report that node, so the next plan starts there
+                lastNodeId = courier.robotActor().loc().name();
                 abortOrder("edge " + e.edgeId() + " failed");
                 return;
             }
