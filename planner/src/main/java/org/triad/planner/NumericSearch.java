@@ -131,7 +131,7 @@ final class NumericSearch {
                     + task.undefinedNote(), stats(groundMs, searchStart, 0, 1));
         }
         long[] evaluations = { 1 };
-        Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
+        Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
         long expanded = first.expanded;
         if (first.outcome == Outcome.EXHAUSTED) {
             return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
@@ -158,7 +158,9 @@ final class NumericSearch {
                 // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
                 // must not starve the less greedy ones that can
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
-                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone, EXPANSION_BUDGET, share, deadline, evaluations);
+                // the last restart is A* on an admissible bound when the metric only grows: exhausted, it proves the best plan optimal
+                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
+                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
@@ -172,8 +174,8 @@ final class NumericSearch {
                         best = plan;
                     }
                 }
-                // an exhausted A* (weight 1) under the bound proves the best plan optimal (for an admissible estimate)
-                if (r.outcome == Outcome.EXHAUSTED && w == 1) break;
+                // an exhausted search under the bound, pruned by an admissible bound, proves the best plan optimal
+                if (r.outcome == Outcome.EXHAUSTED && monotone) break;
             }
         }
         SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
@@ -188,7 +190,13 @@ final class NumericSearch {
      * goal states until its budget ends, returning the best goal state it met.
      */
     private static Run search(NumericTask task, NumericHeuristic h, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
-                              long maxExpansions, long maxEvaluations, long deadline, long[] evaluations) {
+                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations) {
+        // with a bound on a metric that only grows, a state whose cost plus an admissible estimate of the
+        // rest reaches the bound cannot lead to a better plan; slack absorbs rounding in sums of costs
+        boolean prune = bound != Double.POSITIVE_INFINITY && !allGoals;
+        boolean unit = task.metric == null;
+        double limit = bound - 1e-9 * Math.max(1, Math.abs(bound));
+        OpIndex successors = OpIndex.of(task);
         Run run = new Run();
         List<Node> nodes = run.nodes;
         Map<Key, Integer> seen = new HashMap<>();
@@ -200,7 +208,7 @@ final class NumericSearch {
             return Long.compare(a.order, b.order);
         });
         double base = task.metricValue(init.values);
-        double f0 = weight == 0 ? h0 : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
+        double f0 = weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
         nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
         open.add(0);
@@ -226,7 +234,7 @@ final class NumericSearch {
                 run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.LIMIT;
                 return run;
             }
-            for (int o = 0; o < task.ops.size(); o++) {
+            for (int o : successors.candidates(n.state.facts)) {
                 NumericTask.Op op = task.ops.get(o);
                 if (!holds(op.pre(), n.state)) continue;
                 Key next = apply(op, n.state, task.accumulator);
@@ -238,13 +246,15 @@ final class NumericSearch {
                 Integer old = seen.get(next);
                 if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;
                 if (g >= bound) continue;
+                double lb = prune ? h.lowerBound(next.facts, unit) : 0;
+                if (g + lb >= limit) continue;
                 int hv = h.estimate(next.facts, next.values);
                 evaluations[0]++;
                 if (hv == NumericHeuristic.DEAD_END) {
                     seen.put(next, -1);
                     continue;
                 }
-                double fv = weight == 0 ? hv : g + weight * (allGoals ? hv : h.estimateCost(next.facts, next.values));
+                double fv = weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : h.estimateCost(next.facts, next.values));
                 seen.put(next, nodes.size());
                 nodes.add(new Node(next, id, o, g, fv, hv, nodes.size()));
                 open.add(nodes.size() - 1);
@@ -355,5 +365,61 @@ final class NumericSearch {
     /** NaN for an undefined fluent or a division by zero: every comparison with it is false. */
     private static double value(NumericTask.Expr e, double[] values) {
         return NumericTask.value(e, values);
+    }
+
+    /**
+     * The operators worth trying in a state: each indexed under one positive fact of its precondition
+     * (a move under the robot's place), the others always; in operator order, so successors come in the
+     * same order as when every operator is tried.
+     */
+    private static final class OpIndex {
+        private final int[][] byFact;
+        private final int[] always;
+        private OpIndex(int[][] byFact, int[] always) {
+            this.byFact = byFact;
+            this.always = always;
+        }
+
+        static OpIndex of(NumericTask task) {
+            int nf = task.factNames.size();
+            int[] count = new int[nf];
+            int[] anchor = new int[task.ops.size()];
+            List<Integer> free = new ArrayList<>();
+            for (int o = 0; o < anchor.length; o++) {
+                anchor[o] = anchorOf(task.ops.get(o).pre());
+                if (anchor[o] < 0) free.add(o);
+                else count[anchor[o]]++;
+            }
+            int[][] byFact = new int[nf][];
+            for (int f = 0; f < nf; f++) byFact[f] = new int[count[f]];
+            int[] fill = new int[nf];
+            for (int o = 0; o < anchor.length; o++) if (anchor[o] >= 0) byFact[anchor[o]][fill[anchor[o]]++] = o;
+            return new OpIndex(byFact, free.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        /** The first positive fact of a precondition's top-level conjunction, -1 if it has none. */
+        private static int anchorOf(NumericTask.Cond pre) {
+            if (pre instanceof NumericTask.Fact f && f.positive()) return f.id();
+            if (pre instanceof NumericTask.All a) {
+                for (NumericTask.Cond c : a.parts()) if (c instanceof NumericTask.Fact f && f.positive()) return f.id();
+            }
+            return -1;
+        }
+
+        /** The candidates in ascending order (a fresh array: the search's loop may call this again before it ends). */
+        int[] candidates(BitSet facts) {
+            int n = always.length;
+            for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) if (f < byFact.length) n += byFact[f].length;
+            int[] out = new int[n];
+            System.arraycopy(always, 0, out, 0, always.length);
+            int k = always.length;
+            for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
+                if (f >= byFact.length) continue;
+                System.arraycopy(byFact[f], 0, out, k, byFact[f].length);
+                k += byFact[f].length;
+            }
+            Arrays.sort(out);
+            return out;
+        }
     }
 }
