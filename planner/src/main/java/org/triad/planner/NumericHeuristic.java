@@ -479,6 +479,20 @@ final class NumericHeuristic {
      * relaxed plan reaches the goal's facts.
      */
     double lowerBound(BitSet facts, boolean unit) {
+        java.util.Map<BitSet, Double> cache = unit ? unitBounds : costBounds;
+        Double known = cache.get(facts);
+        if (known != null) return known;
+        double h = computeLowerBound(facts, unit);
+        if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
+        return h;
+    }
+
+    /** The bound depends on the facts alone: a robot's places and loads are few, its charge levels many. */
+    private final java.util.Map<BitSet, Double> unitBounds = new java.util.HashMap<>();
+    private final java.util.Map<BitSet, Double> costBounds = new java.util.HashMap<>();
+    private static final int CACHED_BOUNDS = 500_000;
+
+    private double computeLowerBound(BitSet facts, boolean unit) {
         double[] own = unit ? unitCosts() : opCost;
         double[] fcost = factCosts(facts, null, own, true);
         double h = 0;

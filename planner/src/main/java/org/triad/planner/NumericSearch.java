@@ -40,12 +40,18 @@ final class NumericSearch {
     /** ... and never more than this many. */
     static final long IMPROVEMENT_MAX_EVALUATIONS = 100_000;
     private static final int[] WEIGHTS = { 5, 3, 2, 1 };
+    /** The A* probe before the restarts may evaluate this many times the states the first plan needed, plus {@link #PROBE_MIN_EVALUATIONS}. */
+    static final long PROBE_FACTOR = 2;
+    static final long PROBE_MIN_EVALUATIONS = 2_000;
+    /** States the A* search before the first greedy one may evaluate (a metric that only grows, or none). */
+    static final long EXACT_FIRST_EVALUATIONS = 5_000;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
     static final long LENGTH_MAX_EVALUATIONS = 50_000;
 
     private NumericSearch() { }
+    private static final boolean DEBUG = Boolean.getBoolean("triad.numeric.debug");
 
     static boolean isNumeric(Domain domain, Problem problem) {
         return org.triad.planner.pddl.NumericParts.isNumeric(domain) || org.triad.planner.pddl.NumericParts.isNumeric(problem.goal());
@@ -131,8 +137,27 @@ final class NumericSearch {
                     + task.undefinedNote(), stats(groundMs, searchStart, 0, 1));
         }
         long[] evaluations = { 1 };
-        Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
+        NumericDominance dominance = NumericDominance.of(task);
+        Estimates cache = new Estimates();
+        if (task.metric == null || h.metricOnlyGrows()) {
+            // A* on the admissible bound (looked up by the facts, so cheap per state) on a small budget first:
+            // a robot's route with a battery is solved optimally here, before any greedy search
+            Run exact = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, true, EXPANSION_BUDGET,
+                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache);
+            if (DEBUG) System.err.println("exact first: expanded " + exact.expanded + " evaluations " + evaluations[0] + " " + exact.outcome);
+            SolveResult.Stats st = stats(groundMs, searchStart, exact.expanded, evaluations[0]);
+            if (exact.outcome == Outcome.FOUND) return SolveResult.solved(plan(task, opsTo(exact.nodes, exact.goal)), st);
+            if (exact.outcome == Outcome.EXHAUSTED) {
+                return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + exact.faultNote(task), st);
+            }
+            if (exact.outcome == Outcome.TIMEOUT) {
+                String note = task.undefinedNote() + exact.faultNote(task);
+                return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
+            }
+        }
+        Run first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache);
         long expanded = first.expanded;
+        if (DEBUG) System.err.println("first: expanded " + first.expanded + " evaluations " + evaluations[0] + " " + first.outcome);
         if (first.outcome == Outcome.EXHAUSTED) {
             return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
         }
@@ -152,16 +177,38 @@ final class NumericSearch {
                     : Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
             long limit = evaluations[0] + budget;
             boolean monotone = byLength || h.metricOnlyGrows();
-            for (int k = 0; k < WEIGHTS.length; k++) {
+            boolean proven = false;
+            if (monotone) {
+                // A* on the admissible bound first, on a small share: on a robot's route (a bound near the
+                // true cost, states pruned by dominance) it proves a plan optimal in a few hundred states,
+                // where the restarts below would evaluate thousands; otherwise little is lost
+                long probe = evaluations[0] + Math.min(budget / (WEIGHTS.length + 1), PROBE_FACTOR * evaluations[0] + PROBE_MIN_EVALUATIONS);
+                Run r = search(task, h, dominance, init, h0, 1, bestCost - task.metricValue(init.values), true, false, true, EXPANSION_BUDGET, probe, deadline,
+                        evaluations, cache);
+                expanded += r.expanded;
+                if (DEBUG) System.err.println("A* probe: expanded " + r.expanded + " evaluations " + evaluations[0] + " " + r.outcome + " best " + bestCost);
+                if (r.outcome == Outcome.TIMEOUT) cutShort = true;
+                if (r.outcome == Outcome.FOUND) {
+                    List<Integer> plan = eliminateRedundant(task, init, opsTo(r.nodes, r.goal));
+                    double cost = byLength ? plan.size() : metricOf(task, init, plan);
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = plan;
+                    }
+                }
+                proven = r.outcome == Outcome.FOUND || r.outcome == Outcome.EXHAUSTED;
+            }
+            for (int k = 0; k < WEIGHTS.length && !proven && !cutShort; k++) {
                 int w = WEIGHTS[k];
                 if (evaluations[0] >= limit) break;
                 // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
                 // must not starve the less greedy ones that can
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
                 // the last restart is A* on an admissible bound when the metric only grows: exhausted, it proves the best plan optimal
-                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
-                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations);
+                Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
+                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations, cache);
                 expanded += r.expanded;
+                if (DEBUG) System.err.println("w=" + w + ": expanded " + r.expanded + " evaluations " + evaluations[0] + " " + r.outcome + " best " + bestCost);
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
                     break;
@@ -189,14 +236,17 @@ final class NumericSearch {
      * smaller, such as a battery to keep high) the estimate is the layer one and the search goes on past
      * goal states until its budget ends, returning the best goal state it met.
      */
-    private static Run search(NumericTask task, NumericHeuristic h, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
-                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations) {
+    private static Run search(NumericTask task, NumericHeuristic h, NumericDominance dominance, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
+                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations, Estimates cache) {
         // with a bound on a metric that only grows, a state whose cost plus an admissible estimate of the
         // rest reaches the bound cannot lead to a better plan; slack absorbs rounding in sums of costs
         boolean prune = bound != Double.POSITIVE_INFINITY && !allGoals;
         boolean unit = task.metric == null;
         double limit = bound - 1e-9 * Math.max(1, Math.abs(bound));
         OpIndex successors = OpIndex.of(task);
+        // states with the same facts and other values, by their rest: one with more charge (less load) and
+        // a metric no larger makes the other unnecessary (NumericDominance)
+        Map<Key, List<Integer>> frontier = dominance.any ? new HashMap<>() : null;
         Run run = new Run();
         List<Node> nodes = run.nodes;
         Map<Key, Integer> seen = new HashMap<>();
@@ -211,6 +261,7 @@ final class NumericSearch {
         double f0 = weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
         nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
+        if (frontier != null) frontier.computeIfAbsent(new Key(init.facts, init.values, dominance.outsideRest), k -> new ArrayList<>()).add(0);
         open.add(0);
         while (!open.isEmpty()) {
             int id = open.poll();
@@ -246,22 +297,79 @@ final class NumericSearch {
                 Integer old = seen.get(next);
                 if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;
                 if (g >= bound) continue;
-                double lb = prune ? h.lowerBound(next.facts, unit) : 0;
-                if (g + lb >= limit) continue;
-                int hv = h.estimate(next.facts, next.values);
+                List<Integer> rivals = null;
+                if (frontier != null) {
+                    rivals = frontier.computeIfAbsent(new Key(next.facts, next.values, dominance.outsideRest), k -> new ArrayList<>());
+                    if (dominated(rivals, nodes, seen, dominance, next, g)) continue;
+                }
+                double lb = prune || exact ? h.lowerBound(next.facts, unit) : 0;
+                if (prune && g + lb >= limit) continue;
+                if (lb == Double.POSITIVE_INFINITY) {
+                    seen.put(next, -1); // the goal's facts are out of reach even without deletes
+                    continue;
+                }
+                // the exact search orders by g + the bound alone (the bound depends on the facts only, so it is
+                // mostly looked up); the others evaluate the relaxed graph, once per state over all restarts
+                int hv = exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1) : cache.estimate(h, next);
                 evaluations[0]++;
                 if (hv == NumericHeuristic.DEAD_END) {
                     seen.put(next, -1);
                     continue;
                 }
-                double fv = weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : h.estimateCost(next.facts, next.values));
+                double fv = weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : cache.estimateCost(h, next));
                 seen.put(next, nodes.size());
+                if (rivals != null) admit(rivals, nodes, dominance, next, g, nodes.size());
                 nodes.add(new Node(next, id, o, g, fv, hv, nodes.size()));
                 open.add(nodes.size() - 1);
             }
         }
         run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.EXHAUSTED;
         return run;
+    }
+
+    /**
+     * The relaxed graph's estimates of the states met so far: the restarts meet the same states again,
+     * and a state's estimates do not depend on the accumulators its key leaves out (no condition reads
+     * them). Bounded: past {@link #CACHED} states nothing more is kept.
+     */
+    private static final class Estimates {
+        private static final int CACHED = 1_000_000;
+        private final Map<Key, Integer> layers = new HashMap<>();
+        private final Map<Key, Double> costs = new HashMap<>();
+
+        int estimate(NumericHeuristic h, Key s) {
+            Integer v = layers.get(s);
+            if (v != null) return v;
+            int e = h.estimate(s.facts, s.values);
+            if (layers.size() < CACHED) layers.put(s, e);
+            return e;
+        }
+
+        double estimateCost(NumericHeuristic h, Key s) {
+            Double v = costs.get(s);
+            if (v != null) return v;
+            double e = h.estimateCost(s.facts, s.values);
+            if (costs.size() < CACHED) costs.put(s, e);
+            return e;
+        }
+    }
+
+    /** Whether a live state of the same rest has at least as good resources at no greater metric. */
+    private static boolean dominated(List<Integer> rivals, List<Node> nodes, Map<Key, Integer> seen, NumericDominance dominance, Key next, double g) {
+        for (int r : rivals) {
+            Node m = nodes.get(r);
+            if (m.g <= g && dominance.covers(m.state.values, next.values) && !m.state.equals(next)) return true;
+        }
+        return false;
+    }
+
+    /** Adds a state to its rest's rivals, dropping those it dominates (they stay in the open list, but no longer prune). */
+    private static void admit(List<Integer> rivals, List<Node> nodes, NumericDominance dominance, Key next, double g, int id) {
+        rivals.removeIf(r -> {
+            Node m = nodes.get(r);
+            return g <= m.g && dominance.covers(next.values, m.state.values);
+        });
+        rivals.add(id);
     }
 
     /** The metric's value at the end of {@code plan} (the plan is valid). */
