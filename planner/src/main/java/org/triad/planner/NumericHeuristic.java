@@ -483,9 +483,17 @@ final class NumericHeuristic {
         Double known = cache.get(facts);
         if (known != null) return known;
         double h = computeLowerBound(facts, unit);
+        computed++;
         if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
         return h;
     }
+
+    /** How many bounds were computed rather than looked up (a work count for budgets). */
+    long boundsComputed() {
+        return computed;
+    }
+
+    private long computed;
 
     /** The bound depends on the facts alone: a robot's places and loads are few, its charge levels many. */
     private final java.util.Map<BitSet, Double> unitBounds = new java.util.HashMap<>();

@@ -44,14 +44,18 @@ final class NumericSearch {
     static final long PROBE_FACTOR = 2;
     static final long PROBE_MIN_EVALUATIONS = 2_000;
     /** States the A* search before the first greedy one may evaluate (a metric that only grows, or none). */
-    static final long EXACT_FIRST_EVALUATIONS = 5_000;
+    static final long EXACT_FIRST_EVALUATIONS = 100_000;
+    /**
+     * ... and of them at most this many with facts not met before (whose bound is computed, not looked
+     * up): a robot's states are many charge levels over few places, so the many are cheap.
+     */
+    static final long EXACT_FIRST_BOUNDS = 2_000;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
     static final long LENGTH_MAX_EVALUATIONS = 50_000;
 
     private NumericSearch() { }
-    private static final boolean DEBUG = Boolean.getBoolean("triad.numeric.debug");
 
     static boolean isNumeric(Domain domain, Problem problem) {
         return org.triad.planner.pddl.NumericParts.isNumeric(domain) || org.triad.planner.pddl.NumericParts.isNumeric(problem.goal());
@@ -143,8 +147,7 @@ final class NumericSearch {
             // A* on the admissible bound (looked up by the facts, so cheap per state) on a small budget first:
             // a robot's route with a battery is solved optimally here, before any greedy search
             Run exact = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, true, EXPANSION_BUDGET,
-                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache);
-            if (DEBUG) System.err.println("exact first: expanded " + exact.expanded + " evaluations " + evaluations[0] + " " + exact.outcome);
+                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS);
             SolveResult.Stats st = stats(groundMs, searchStart, exact.expanded, evaluations[0]);
             if (exact.outcome == Outcome.FOUND) return SolveResult.solved(plan(task, opsTo(exact.nodes, exact.goal)), st);
             if (exact.outcome == Outcome.EXHAUSTED) {
@@ -155,9 +158,8 @@ final class NumericSearch {
                 return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
             }
         }
-        Run first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache);
+        Run first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache, Long.MAX_VALUE);
         long expanded = first.expanded;
-        if (DEBUG) System.err.println("first: expanded " + first.expanded + " evaluations " + evaluations[0] + " " + first.outcome);
         if (first.outcome == Outcome.EXHAUSTED) {
             return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
         }
@@ -184,9 +186,8 @@ final class NumericSearch {
                 // where the restarts below would evaluate thousands; otherwise little is lost
                 long probe = evaluations[0] + Math.min(budget / (WEIGHTS.length + 1), PROBE_FACTOR * evaluations[0] + PROBE_MIN_EVALUATIONS);
                 Run r = search(task, h, dominance, init, h0, 1, bestCost - task.metricValue(init.values), true, false, true, EXPANSION_BUDGET, probe, deadline,
-                        evaluations, cache);
+                        evaluations, cache, Long.MAX_VALUE);
                 expanded += r.expanded;
-                if (DEBUG) System.err.println("A* probe: expanded " + r.expanded + " evaluations " + evaluations[0] + " " + r.outcome + " best " + bestCost);
                 if (r.outcome == Outcome.TIMEOUT) cutShort = true;
                 if (r.outcome == Outcome.FOUND) {
                     List<Integer> plan = eliminateRedundant(task, init, opsTo(r.nodes, r.goal));
@@ -206,9 +207,8 @@ final class NumericSearch {
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
                 // the last restart is A* on an admissible bound when the metric only grows: exhausted, it proves the best plan optimal
                 Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
-                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations, cache);
+                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE);
                 expanded += r.expanded;
-                if (DEBUG) System.err.println("w=" + w + ": expanded " + r.expanded + " evaluations " + evaluations[0] + " " + r.outcome + " best " + bestCost);
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
                     break;
@@ -237,7 +237,8 @@ final class NumericSearch {
      * goal states until its budget ends, returning the best goal state it met.
      */
     private static Run search(NumericTask task, NumericHeuristic h, NumericDominance dominance, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
-                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations, Estimates cache) {
+                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations, Estimates cache,
+                              long maxBounds) {
         // with a bound on a metric that only grows, a state whose cost plus an admissible estimate of the
         // rest reaches the bound cannot lead to a better plan; slack absorbs rounding in sums of costs
         boolean prune = bound != Double.POSITIVE_INFINITY && !allGoals;
@@ -281,7 +282,7 @@ final class NumericSearch {
                 run.outcome = Outcome.TIMEOUT;
                 return run;
             }
-            if (++run.expanded > maxExpansions || evaluations[0] >= maxEvaluations) {
+            if (++run.expanded > maxExpansions || evaluations[0] >= maxEvaluations || h.boundsComputed() >= maxBounds) {
                 run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.LIMIT;
                 return run;
             }
