@@ -177,14 +177,14 @@ final class NumericSearch {
             double bestCost = byLength ? best.size() : metricOf(task, init, best);
             long budget = byLength ? Math.min(LENGTH_MAX_EVALUATIONS, Math.max(LENGTH_MIN_EVALUATIONS, LENGTH_FACTOR * evaluations[0]))
                     : Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
-            long limit = evaluations[0] + budget;
+            long firstWork = evaluations[0];
             boolean monotone = byLength || h.metricOnlyGrows();
             boolean proven = false;
             if (monotone) {
                 // A* on the admissible bound first, on a small share: on a robot's route (a bound near the
                 // true cost, states pruned by dominance) it proves a plan optimal in a few hundred states,
                 // where the restarts below would evaluate thousands; otherwise little is lost
-                long probe = evaluations[0] + Math.min(budget / (WEIGHTS.length + 1), PROBE_FACTOR * evaluations[0] + PROBE_MIN_EVALUATIONS);
+                long probe = evaluations[0] + Math.min(budget / WEIGHTS.length, PROBE_FACTOR * firstWork + PROBE_MIN_EVALUATIONS);
                 Run r = search(task, h, dominance, init, h0, 1, bestCost - task.metricValue(init.values), true, false, true, EXPANSION_BUDGET, probe, deadline,
                         evaluations, cache, Long.MAX_VALUE);
                 expanded += r.expanded;
@@ -199,15 +199,17 @@ final class NumericSearch {
                 }
                 proven = r.outcome == Outcome.FOUND || r.outcome == Outcome.EXHAUSTED;
             }
+            // the restarts get the whole budget, the probe's work on top of it
+            long limit = evaluations[0] + budget;
             for (int k = 0; k < WEIGHTS.length && !proven && !cutShort; k++) {
                 int w = WEIGHTS[k];
                 if (evaluations[0] >= limit) break;
                 // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
                 // must not starve the less greedy ones that can
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
-                // the last restart is A* on an admissible bound when the metric only grows: exhausted, it proves the best plan optimal
+                // weight 1 is A* on the cost estimate (not admissible, but it finds what the bound's A* probe could not afford)
                 Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
-                        monotone && w == 1, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE);
+                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
