@@ -23,11 +23,17 @@ final class NumericDominance {
     final boolean[] outsideRest;
     /** Whether some fluent has a direction (else dominance is equality and not worth checking). */
     final boolean any;
+    /**
+     * Whether every fluent a condition reads has a direction: the numbers are resources only (a battery,
+     * a load), so the facts tell most of the way and a search guided by the facts alone is apt.
+     */
+    final boolean resourcesOnly;
 
-    private NumericDominance(int[] direction, boolean[] outsideRest, boolean any) {
+    private NumericDominance(int[] direction, boolean[] outsideRest, boolean any, boolean resourcesOnly) {
         this.direction = direction;
         this.outsideRest = outsideRest;
         this.any = any;
+        this.resourcesOnly = resourcesOnly;
     }
 
     static NumericDominance of(NumericTask task) {
@@ -64,7 +70,9 @@ final class NumericDominance {
                 any = true;
             }
         }
-        return new NumericDominance(direction, outside, any);
+        boolean resourcesOnly = true;
+        for (int i = 0; i < nv; i++) if ((up[i] || down[i]) && (direction[i] == NEITHER || task.accumulator[i])) resourcesOnly = false;
+        return new NumericDominance(direction, outside, any, resourcesOnly);
     }
 
     /**

@@ -488,6 +488,26 @@ final class NumericHeuristic {
         return h;
     }
 
+    /**
+     * h_add over the facts, each operator costing its {@link #opCost} (1 with {@code unit}), comparisons
+     * taken as true: not admissible, but it sees that a delivery needs the way to the item and the way on;
+     * cached by the facts as {@link #lowerBound} is.
+     */
+    double additive(BitSet facts, boolean unit) {
+        java.util.Map<BitSet, Double> cache = unit ? unitSums : costSums;
+        Double known = cache.get(facts);
+        if (known != null) return known;
+        double[] fcost = factCosts(facts, null, unit ? unitCosts() : opCost, false);
+        double h = 0;
+        for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h += fcost[f.id()];
+        computed++;
+        if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
+        return h;
+    }
+
+    private final java.util.Map<BitSet, Double> unitSums = new java.util.HashMap<>();
+    private final java.util.Map<BitSet, Double> costSums = new java.util.HashMap<>();
+
     /** How many bounds were computed rather than looked up (a work count for budgets). */
     long boundsComputed() {
         return computed;

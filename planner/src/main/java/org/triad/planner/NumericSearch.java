@@ -50,6 +50,8 @@ final class NumericSearch {
      * up): a robot's states are many charge levels over few places, so the many are cheap.
      */
     static final long EXACT_FIRST_BOUNDS = 2_000;
+    /** The weight on h_add of the weighted A* that looks for a cheap first plan when the A* above gives up. */
+    static final int ADDITIVE_WEIGHT = 2;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
@@ -147,7 +149,7 @@ final class NumericSearch {
             // A* on the admissible bound (looked up by the facts, so cheap per state) on a small budget first:
             // a robot's route with a battery is solved optimally here, before any greedy search
             Run exact = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, true, EXPANSION_BUDGET,
-                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS);
+                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS, 0);
             SolveResult.Stats st = stats(groundMs, searchStart, exact.expanded, evaluations[0]);
             if (exact.outcome == Outcome.FOUND) return SolveResult.solved(plan(task, opsTo(exact.nodes, exact.goal)), st);
             if (exact.outcome == Outcome.EXHAUSTED) {
@@ -158,8 +160,22 @@ final class NumericSearch {
                 return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
             }
         }
-        Run first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache, Long.MAX_VALUE);
-        long expanded = first.expanded;
+        long expanded = 0;
+        Run first = null;
+        if ((task.metric == null || h.metricOnlyGrows()) && dominance.resourcesOnly) {
+            // numbers that are resources only: weighted A* on h_add over the facts (also looked up by the facts),
+            // on the same small budget; a delivery, whose bound above sees only the longer of its two legs,
+            // gets a cheap plan here
+            Run cheap = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, false, EXPANSION_BUDGET,
+                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS, ADDITIVE_WEIGHT);
+            expanded += cheap.expanded;
+            if (cheap.outcome == Outcome.FOUND) first = cheap;
+        }
+        if (first == null) {
+            first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache,
+                    Long.MAX_VALUE, 0);
+            expanded += first.expanded;
+        }
         if (first.outcome == Outcome.EXHAUSTED) {
             return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
         }
@@ -186,7 +202,7 @@ final class NumericSearch {
                 // where the restarts below would evaluate thousands; otherwise little is lost
                 long probe = evaluations[0] + Math.min(budget / WEIGHTS.length, PROBE_FACTOR * firstWork + PROBE_MIN_EVALUATIONS);
                 Run r = search(task, h, dominance, init, h0, 1, bestCost - task.metricValue(init.values), true, false, true, EXPANSION_BUDGET, probe, deadline,
-                        evaluations, cache, Long.MAX_VALUE);
+                        evaluations, cache, Long.MAX_VALUE, 0);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) cutShort = true;
                 if (r.outcome == Outcome.FOUND) {
@@ -207,9 +223,10 @@ final class NumericSearch {
                 // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
                 // must not starve the less greedy ones that can
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
-                // weight 1 is A* on the cost estimate (not admissible, but it finds what the bound's A* probe could not afford)
+                // weight 1 is A* on the cost estimate (not admissible, but it finds what the bound's A* probe could not afford);
+                // numbers that are resources only are ordered by h_add over the facts, looked up rather than computed
                 Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
-                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE);
+                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE, dominance.resourcesOnly && monotone ? w : 0);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
@@ -240,7 +257,7 @@ final class NumericSearch {
      */
     private static Run search(NumericTask task, NumericHeuristic h, NumericDominance dominance, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
                               boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations, Estimates cache,
-                              long maxBounds) {
+                              long maxBounds, int additive) {
         // with a bound on a metric that only grows, a state whose cost plus an admissible estimate of the
         // rest reaches the bound cannot lead to a better plan; slack absorbs rounding in sums of costs
         boolean prune = bound != Double.POSITIVE_INFINITY && !allGoals;
@@ -261,7 +278,7 @@ final class NumericSearch {
             return Long.compare(a.order, b.order);
         });
         double base = task.metricValue(init.values);
-        double f0 = weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
+        double f0 = additive > 0 ? additive * h.additive(init.facts, unit) : weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
         nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
         if (frontier != null) frontier.computeIfAbsent(new Key(init.facts, init.values, dominance.outsideRest), k -> new ArrayList<>()).add(0);
@@ -313,13 +330,18 @@ final class NumericSearch {
                 }
                 // the exact search orders by g + the bound alone (the bound depends on the facts only, so it is
                 // mostly looked up); the others evaluate the relaxed graph, once per state over all restarts
-                int hv = exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1) : cache.estimate(h, next);
+                double ha = additive > 0 ? h.additive(next.facts, unit) : 0;
+                if (ha == Double.POSITIVE_INFINITY) {
+                    seen.put(next, -1);
+                    continue;
+                }
+                int hv = additive > 0 ? (int) Math.min(ha, Integer.MAX_VALUE - 1) : exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1) : cache.estimate(h, next);
                 evaluations[0]++;
                 if (hv == NumericHeuristic.DEAD_END) {
                     seen.put(next, -1);
                     continue;
                 }
-                double fv = weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : cache.estimateCost(h, next));
+                double fv = additive > 0 ? g + additive * ha : weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : cache.estimateCost(h, next));
                 seen.put(next, nodes.size());
                 if (rivals != null) admit(rivals, nodes, dominance, next, g, nodes.size());
                 nodes.add(new Node(next, id, o, g, fv, hv, nodes.size()));
