@@ -508,6 +508,11 @@ final class NumericHeuristic {
     private final java.util.Map<BitSet, Double> unitSums = new java.util.HashMap<>();
     private final java.util.Map<BitSet, Double> costSums = new java.util.HashMap<>();
 
+    /** Whether the goal needs some fact (else estimates over the facts alone see nothing of the way). */
+    boolean goalHasFacts() {
+        return goalFacts.length > 0;
+    }
+
     /** How many bounds were computed rather than looked up (a work count for budgets). */
     long boundsComputed() {
         return computed;

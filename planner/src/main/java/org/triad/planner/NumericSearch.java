@@ -162,7 +162,8 @@ final class NumericSearch {
         }
         long expanded = 0;
         Run first = null;
-        if ((task.metric == null || h.metricOnlyGrows()) && dominance.resourcesOnly) {
+        boolean byFacts = dominance.resourcesOnly && h.goalHasFacts();
+        if ((task.metric == null || h.metricOnlyGrows()) && byFacts) {
             // numbers that are resources only: weighted A* on h_add over the facts (also looked up by the facts),
             // on the same small budget; a delivery, whose bound above sees only the longer of its two legs,
             // gets a cheap plan here
@@ -227,7 +228,7 @@ final class NumericSearch {
                 // with numbers that are resources only, the weighted ones are ordered by h_add over the facts, looked up
                 // rather than computed (weight 1 keeps the cost estimate: on IPC delivery p2 it finds 36 where h_add gets 42)
                 Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
-                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE, dominance.resourcesOnly && monotone && w > 1 ? w : 0);
+                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE, byFacts && monotone && w > 1 ? w : 0);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
