@@ -50,6 +50,8 @@ final class NumericSearch {
      * up): a robot's states are many charge levels over few places, so the many are cheap.
      */
     static final long EXACT_FIRST_BOUNDS = 2_000;
+    /** ... and when the goal is numbers only, whose bound is 0 (a breadth-first search then: counters' shortest plans). */
+    static final long EXACT_FIRST_BLIND_EVALUATIONS = 10_000;
     /** The weight on h_add of the weighted A* that looks for a cheap first plan when the A* above gives up. */
     static final int ADDITIVE_WEIGHT = 2;
     /** The same for a problem without a metric, whose plan's length is improved. */
@@ -149,7 +151,8 @@ final class NumericSearch {
             // A* on the admissible bound (looked up by the facts, so cheap per state) on a small budget first:
             // a robot's route with a battery is solved optimally here, before any greedy search
             Run exact = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, true, EXPANSION_BUDGET,
-                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS, 0);
+                    evaluations[0] + (h.goalHasFacts() ? EXACT_FIRST_EVALUATIONS : EXACT_FIRST_BLIND_EVALUATIONS), deadline, evaluations, cache,
+                    h.boundsComputed() + EXACT_FIRST_BOUNDS, 0);
             SolveResult.Stats st = stats(groundMs, searchStart, exact.expanded, evaluations[0]);
             if (exact.outcome == Outcome.FOUND) return SolveResult.solved(plan(task, opsTo(exact.nodes, exact.goal)), st);
             if (exact.outcome == Outcome.EXHAUSTED) {
@@ -396,8 +399,15 @@ final class NumericSearch {
             Node m = nodes.get(r);
             return g <= m.g && dominance.covers(next.values, m.state.values);
         });
-        rivals.add(id);
+        if (rivals.size() < MAX_RIVALS) rivals.add(id);
     }
+
+    /**
+     * States kept per rest to compare against: when every fluent is a resource, all states of a task whose
+     * facts never change share one rest, and comparing each with all would be quadratic. Fewer rivals
+     * prune less, never wrongly.
+     */
+    private static final int MAX_RIVALS = 16;
 
     /** The metric's value at the end of {@code plan} (the plan is valid). */
     private static double metricOf(NumericTask task, Key init, List<Integer> plan) {
