@@ -80,6 +80,12 @@ final class NumericHeuristic {
                 }
             }
         }
+        lowestThreshold = new double[nv];
+        highestThreshold = new double[nv];
+        for (int i = 0; i < nv; i++) {
+            lowestThreshold[i] = lowThresholds.get(i).stream().mapToDouble(Double::doubleValue).min().orElse(Double.POSITIVE_INFINITY);
+            highestThreshold[i] = highThresholds.get(i).stream().mapToDouble(Double::doubleValue).max().orElse(Double.NEGATIVE_INFINITY);
+        }
         pure = new boolean[task.ops.size()];
         for (int o = 0; o < pure.length; o++) {
             boolean p = true;
@@ -90,11 +96,239 @@ final class NumericHeuristic {
             pure[o] = p;
         }
         metricOnlyGrows = grows;
+        int no = task.ops.size();
+        preFacts = new int[no][];
+        preRest = new NumericTask.Cond[no];
+        repeatAlways = new boolean[no];
+        raises = new NumericTask.NumEffect[no][];
+        lowers = new NumericTask.NumEffect[no][];
+        boolean anyChoice = false;
+        List<List<Integer>> byFact = new ArrayList<>();
+        for (int f = 0; f < task.factNames.size(); f++) byFact.add(new ArrayList<>());
+        for (int o = 0; o < no; o++) {
+            NumericTask.Op op = task.ops.get(o);
+            java.util.TreeSet<Integer> fs = new java.util.TreeSet<>();
+            List<NumericTask.Cond> rest = new ArrayList<>();
+            for (NumericTask.Cond c : op.pre() instanceof NumericTask.All a ? a.parts() : List.of(op.pre())) {
+                if (c instanceof NumericTask.Fact f && f.positive()) fs.add(f.id());
+                else if (!(c instanceof NumericTask.Fact)) rest.add(c); // a negative fact holds in the relaxation
+                if (c instanceof NumericTask.Any) anyChoice = true;
+            }
+            preFacts[o] = fs.stream().mapToInt(Integer::intValue).toArray();
+            for (int f : preFacts[o]) byFact.get(f).add(o);
+            preRest[o] = rest.isEmpty() ? NumericTask.TRUE : rest.size() == 1 ? rest.get(0) : new NumericTask.All(rest);
+            List<NumericTask.NumEffect> up = new ArrayList<>();
+            List<NumericTask.NumEffect> down = new ArrayList<>();
+            for (NumericTask.Effects e : op.effects()) {
+                if (e.when() != NumericTask.TRUE) {
+                    repeatAlways[o] = true;
+                    anyChoice = true;
+                }
+                for (NumericTask.NumEffect n : e.numeric()) {
+                    if (task.accumulator[n.fluent()]) continue;
+                    if (!(n.value() instanceof NumericTask.Num k) || n.kind().startsWith("scale")) repeatAlways[o] = true;
+                    else if (n.kind().equals("assign") || k.value() == 0) continue; // the same interval again: nothing more to give
+                    else if (n.kind().equals("increase") == k.value() > 0) up.add(n);
+                    else down.add(n);
+                }
+            }
+            raises[o] = up.toArray(new NumericTask.NumEffect[0]);
+            lowers[o] = down.toArray(new NumericTask.NumEffect[0]);
+        }
+        factOps = new int[byFact.size()][];
+        for (int f = 0; f < factOps.length; f++) factOps[f] = byFact.get(f).stream().mapToInt(Integer::intValue).toArray();
+        choices = anyChoice;
+        java.util.TreeSet<Integer> gf = new java.util.TreeSet<>();
+        collectFacts(task.goal, gf);
+        goalFacts = gf.stream().mapToInt(Integer::intValue).toArray();
+        isGoalFact = new boolean[task.factNames.size()];
+        for (int f : goalFacts) isGoalFact[f] = true;
+    }
+
+    /** The facts the goal mentions (positively, anywhere in it), whose costs the cost estimates need. */
+    private final int[] goalFacts;
+    private final boolean[] isGoalFact;
+
+    private static void collectFacts(NumericTask.Cond c, java.util.Set<Integer> out) {
+        if (c instanceof NumericTask.Fact f && f.positive()) out.add(f.id());
+        else if (c instanceof NumericTask.All a) a.parts().forEach(p -> collectFacts(p, out));
+        else if (c instanceof NumericTask.Any a) a.parts().forEach(p -> collectFacts(p, out));
+    }
+
+    /** Per operator: its positive fact preconditions (the triggers of the relaxed graph) and the rest of its precondition. */
+    private final int[][] preFacts;
+    private final NumericTask.Cond[] preRest;
+    /** Per fact: the operators that need it. */
+    private final int[][] factOps;
+    /**
+     * Per operator, how it widens the intervals again in every layer after its first: conditional or
+     * non-constant effects ({@code repeatAlways}) each time, a constant increase only the upper bound
+     * ({@code raises}), a constant decrease only the lower ({@code lowers}); a constant assignment gives the
+     * same interval again, so nothing.
+     */
+    private final boolean[] repeatAlways;
+    private final NumericTask.NumEffect[][] raises;
+    private final NumericTask.NumEffect[][] lowers;
+    /** Whether some precondition or effect condition is a disjunction, or an effect conditional (the cost estimate then keeps its layered sums). */
+    private final boolean choices;
+
+    /**
+     * The layer estimate: the sum over the goal's conjuncts of the first layer of the numeric relaxed
+     * planning graph at which each can hold, {@link #DEAD_END} when the graph stops growing first. The
+     * graph is built as FF builds its STRIPS one: an operator is looked at when its last fact precondition
+     * appears (then in every layer until its comparisons hold), and an applied one widens the intervals
+     * again only in directions that can still make a condition true ({@link #matters}: a battery's falling
+     * lower bound, once below every threshold of a {@code <} comparison, changes nothing). Equal to
+     * {@link #estimateByLayers}, in time about linear in the operators instead of operators times layers.
+     */
+    int estimate(BitSet facts, double[] values) {
+        return layers(facts, values, null, null, -1);
+    }
+
+    /**
+     * The graph of {@link #estimate}; {@code opLayer}/{@code goalLayer} (when given) get the first layer each
+     * operator applies / each goal conjunct holds (-1: not reached). With {@code after} at least 0 the graph
+     * goes on for that many layers after the goal holds, without widening any further, and returns 0
+     * (or {@link #DEAD_END}).
+     */
+    private int layers(BitSet facts, double[] values, int[] opLayer, int[] goalLayer, int after) {
+        int no = task.ops.size();
+        BitSet reached = (BitSet) facts.clone();
+        double[] lo = values.clone();
+        double[] hi = values.clone();
+        int[] missing = new int[no];
+        int[] cand = new int[no];
+        int nc = 0;
+        int[] repeat = new int[no];
+        int nr = 0;
+        for (int o = 0; o < no; o++) {
+            int m = 0;
+            for (int f : preFacts[o]) if (!facts.get(f)) m++;
+            missing[o] = m;
+            if (m == 0) cand[nc++] = o;
+        }
+        int[] added = new int[task.factNames.size()];
+        boolean[] done = new boolean[goals.size()];
+        int open = goals.size();
+        int sum = 0;
+        boolean checkedOptimistically = false;
+        boolean numbersChanged;
+        BitSet pending = new BitSet();
+        int allReachedAt = -1;
+        for (int layer = 0; layer <= MAX_LAYERS; layer++) {
+            for (int g = 0; g < goals.size(); g++) {
+                if (!done[g] && holds(goals.get(g), reached, lo, hi)) {
+                    done[g] = true;
+                    open--;
+                    sum += layer;
+                    if (goalLayer != null) goalLayer[g] = layer;
+                }
+            }
+            if (open == 0 && allReachedAt < 0) {
+                if (after < 0) return sum;
+                allReachedAt = layer;
+            }
+            if (allReachedAt >= 0 && layer > allReachedAt + after) return 0;
+            boolean widening = allReachedAt < 0;
+            double[] nextLo = lo.clone();
+            double[] nextHi = hi.clone();
+            int na = 0;
+            int firedFrom = nr;
+            int kept = 0;
+            for (int i = 0; i < nc; i++) {
+                int o = cand[i];
+                if (preRest[o] != NumericTask.TRUE && !holds(preRest[o], reached, lo, hi)) {
+                    cand[kept++] = o;
+                    continue;
+                }
+                if (opLayer != null) opLayer[o] = layer;
+                na = apply(o, reached, pending, lo, hi, nextLo, nextHi, added, na, widening);
+                if (repeatAlways[o] || raises[o].length > 0 || lowers[o].length > 0) repeat[nr++] = o;
+            }
+            nc = kept;
+            if (widening) {
+                int live = 0;
+                for (int i = 0; i < nr; i++) {
+                    int o = repeat[i];
+                    if (i >= firedFrom) {
+                        repeat[live++] = o; // fired in this layer: its effects are in already
+                        continue;
+                    }
+                    if (repeatAlways[o]) {
+                        na = apply(o, reached, pending, lo, hi, nextLo, nextHi, added, na, true);
+                        repeat[live++] = o;
+                        continue;
+                    }
+                    // a direction that cannot help now never can (bounds only widen): an operator left with none is dropped
+                    boolean helps = false;
+                    for (NumericTask.NumEffect n : raises[o]) {
+                        if (raiseHelps(n.fluent(), hi)) {
+                            widen(n, lo, hi, nextLo, nextHi);
+                            helps = true;
+                        }
+                    }
+                    for (NumericTask.NumEffect n : lowers[o]) {
+                        if (lowerHelps(n.fluent(), lo)) {
+                            widen(n, lo, hi, nextLo, nextHi);
+                            helps = true;
+                        }
+                    }
+                    if (helps) repeat[live++] = o;
+                }
+                nr = live;
+            }
+            boolean changed = na > 0;
+            numbersChanged = false;
+            for (int i = 0; i < lo.length && !numbersChanged; i++) numbersChanged = matters(i, lo, hi, nextLo, nextHi);
+            changed |= numbersChanged;
+            if (!changed) return after >= 0 && allReachedAt >= 0 ? 0 : DEAD_END;
+            if (na == 0 && !checkedOptimistically && after < 0) {
+                // only numbers still grow, perhaps forever: a goal that needs a fact no action can add is out of reach
+                checkedOptimistically = true;
+                if (!optimisticallyReachable(reached, done)) return DEAD_END;
+            }
+            for (int i = 0; i < na; i++) {
+                int f = added[i];
+                reached.set(f);
+                pending.clear(f);
+                for (int o : factOps[f]) if (--missing[o] == 0) cand[nc++] = o;
+            }
+            lo = nextLo;
+            hi = nextHi;
+        }
+        return after >= 0 ? (open == 0 ? 0 : DEAD_END) : sum + open * MAX_LAYERS;
+    }
+
+    /** Applies an operator's effects to the next layer; returns the new count of {@code added}. */
+    private int apply(int o, BitSet reached, BitSet pending, double[] lo, double[] hi, double[] nextLo, double[] nextHi, int[] added, int na, boolean widening) {
+        for (NumericTask.Effects e : task.ops.get(o).effects()) {
+            if (e.when() != NumericTask.TRUE && !holds(e.when(), reached, lo, hi)) continue;
+            for (int f : e.adds()) {
+                if (!reached.get(f) && !pending.get(f)) {
+                    pending.set(f);
+                    added[na++] = f;
+                }
+            }
+            if (widening) for (NumericTask.NumEffect n : e.numeric()) if (!task.accumulator[n.fluent()]) widen(n, lo, hi, nextLo, nextHi);
+        }
+        return na;
+    }
+
+    /** Whether raising fluent {@code i}'s upper bound can still make a condition true ({@link #matters}). */
+    private boolean raiseHelps(int i, double[] hi) {
+        return highMatters[i] || Double.isNaN(hi[i]) || highestThreshold[i] >= hi[i];
+    }
+
+    private boolean lowerHelps(int i, double[] lo) {
+        return lowMatters[i] || Double.isNaN(lo[i]) || lowestThreshold[i] <= lo[i];
     }
 
     /** Per fluent: the values at which a comparison of it alone flips, for its lower and its upper bound. */
     private final List<List<Double>> lowThresholds = new ArrayList<>();
     private final List<List<Double>> highThresholds = new ArrayList<>();
+    /** Per fluent, the least of its lower bound's thresholds and the greatest of its upper bound's (a bound is ahead of some threshold iff it is ahead of these). */
+    private final double[] lowestThreshold;
+    private final double[] highestThreshold;
 
     /**
      * Whether the widening of fluent {@code i} can make a condition true: its first value, a bound that
@@ -103,15 +337,9 @@ final class NumericHeuristic {
      */
     private boolean matters(int i, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
         if (Double.isNaN(lo[i])) return !Double.isNaN(nextLo[i]);
-        if (nextLo[i] < lo[i]) {
-            if (lowMatters[i]) return true;
-            for (double t : lowThresholds.get(i)) if (t <= lo[i]) return true; // a threshold still ahead, not only one crossed now
-        }
-        if (nextHi[i] > hi[i]) {
-            if (highMatters[i]) return true;
-            for (double t : highThresholds.get(i)) if (t >= hi[i]) return true;
-        }
-        return false;
+        // a threshold still ahead, not only one crossed now
+        if (nextLo[i] < lo[i] && (lowMatters[i] || lowestThreshold[i] <= lo[i])) return true;
+        return nextHi[i] > hi[i] && (highMatters[i] || highestThreshold[i] >= hi[i]);
     }
 
     /** The one fluent a linear expression reads, -1 when it reads none, -2 when several or not linearly. */
@@ -219,6 +447,154 @@ final class NumericHeuristic {
             int h = estimate(facts, values);
             return h == DEAD_END ? Double.POSITIVE_INFINITY : h;
         }
+        if (choices) return estimateCostByLayers(facts, values);
+        int no = task.ops.size();
+        int[] opLayer = new int[no];
+        java.util.Arrays.fill(opLayer, -1);
+        int[] goalLayer = new int[goals.size()];
+        java.util.Arrays.fill(goalLayer, -1);
+        if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) return Double.POSITIVE_INFINITY;
+        double[] own = new double[no];
+        for (int o = 0; o < no; o++) {
+            if (opLayer[o] >= 0) own[o] = opCost[o] + (numericHolds(preRest[o], values) ? 0 : cheapest * Math.max(1, opLayer[o]));
+        }
+        double[] fcost = factCosts(facts, opLayer, own, false);
+        double sum = 0;
+        for (int g = 0; g < goals.size(); g++) {
+            NumericTask.Cond c = goals.get(g);
+            sum += factCost(c, fcost) + (numericHolds(c, values) ? 0 : cheapest * Math.max(1, goalLayer[g]));
+        }
+        return sum;
+    }
+
+    /** Layers the cost estimate's graph goes on after the goal holds (cheaper supporters may appear later). */
+    private static final int COST_LAYERS_AFTER = 8;
+
+    /**
+     * A lower bound on the metric's growth from this state to a goal state ({@code unit}: on the number
+     * of steps): h_max over the facts, each operator costing its {@link #opCost} (1), comparisons and
+     * effect conditions taken as true. Admissible for the steps always, for the metric when
+     * {@link #metricOnlyGrows()} (every operator's growth is then a constant, at least 0); so a partial
+     * plan whose cost plus this bound reaches the best plan's cost cannot improve on it. Infinite when no
+     * relaxed plan reaches the goal's facts.
+     */
+    double lowerBound(BitSet facts, boolean unit) {
+        java.util.Map<BitSet, Double> cache = unit ? unitBounds : costBounds;
+        Double known = cache.get(facts);
+        if (known != null) return known;
+        double h = computeLowerBound(facts, unit);
+        computed++;
+        if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
+        return h;
+    }
+
+    /**
+     * h_add over the facts, each operator costing its {@link #opCost} (1 with {@code unit}), comparisons
+     * taken as true: not admissible, but it sees that a delivery needs the way to the item and the way on;
+     * cached by the facts as {@link #lowerBound} is.
+     */
+    double additive(BitSet facts, boolean unit) {
+        java.util.Map<BitSet, Double> cache = unit ? unitSums : costSums;
+        Double known = cache.get(facts);
+        if (known != null) return known;
+        double[] fcost = factCosts(facts, null, unit ? unitCosts() : opCost, false);
+        double h = 0;
+        for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h += fcost[f.id()];
+        computed++;
+        if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
+        return h;
+    }
+
+    private final java.util.Map<BitSet, Double> unitSums = new java.util.HashMap<>();
+    private final java.util.Map<BitSet, Double> costSums = new java.util.HashMap<>();
+
+    /** Whether the goal needs some fact (else estimates over the facts alone see nothing of the way). */
+    boolean goalHasFacts() {
+        return goalFacts.length > 0;
+    }
+
+    /** How many bounds were computed rather than looked up (a work count for budgets). */
+    long boundsComputed() {
+        return computed;
+    }
+
+    private long computed;
+
+    /** The bound depends on the facts alone: a robot's places and loads are few, its charge levels many. */
+    private final java.util.Map<BitSet, Double> unitBounds = new java.util.HashMap<>();
+    private final java.util.Map<BitSet, Double> costBounds = new java.util.HashMap<>();
+    private static final int CACHED_BOUNDS = 500_000;
+
+    private double computeLowerBound(BitSet facts, boolean unit) {
+        double[] own = unit ? unitCosts() : opCost;
+        double[] fcost = factCosts(facts, null, own, true);
+        double h = 0;
+        for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h = Math.max(h, fcost[f.id()]);
+        return h;
+    }
+
+    private double[] unitCosts;
+
+    private double[] unitCosts() {
+        if (unitCosts == null) {
+            unitCosts = new double[task.ops.size()];
+            java.util.Arrays.fill(unitCosts, 1);
+        }
+        return unitCosts;
+    }
+
+    /**
+     * Facts' costs by a generalised Dijkstra: an operator (of those with {@code opLayer} at least 0, all
+     * when it is null) adds its facts at its {@code own} cost plus the sum ({@code max}: the largest) of
+     * its fact preconditions' costs. Stops once the goal's facts are settled.
+     */
+    private double[] factCosts(BitSet facts, int[] opLayer, double[] own, boolean max) {
+        int no = task.ops.size();
+        double[] fcost = new double[task.factNames.size()];
+        java.util.Arrays.fill(fcost, Double.POSITIVE_INFINITY);
+        int[] missing = new int[no];
+        double[] acc = new double[no];
+        NodeHeap heap = new NodeHeap();
+        for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
+            fcost[f] = 0;
+            heap.push(0, f);
+        }
+        for (int o = 0; o < no; o++) {
+            missing[o] = preFacts[o].length;
+            if (missing[o] == 0 && (opLayer == null || opLayer[o] >= 0)) relax(o, own[o], fcost, heap);
+        }
+        int targets = goalFacts.length;
+        boolean[] settled = new boolean[fcost.length];
+        while (!heap.isEmpty() && targets > 0) {
+            long key = heap.topKey();
+            int f = heap.pop();
+            if (settled[f] || Double.longBitsToDouble(key) > fcost[f]) continue;
+            settled[f] = true;
+            if (isGoalFact[f]) targets--;
+            for (int o : factOps[f]) {
+                acc[o] = max ? Math.max(acc[o], fcost[f]) : acc[o] + fcost[f];
+                if (--missing[o] == 0 && (opLayer == null || opLayer[o] >= 0)) relax(o, own[o] + acc[o], fcost, heap);
+            }
+        }
+        return fcost;
+    }
+
+    private void relax(int o, double c, double[] fcost, NodeHeap heap) {
+        for (NumericTask.Effects e : task.ops.get(o).effects()) {
+            for (int a : e.adds()) {
+                if (c < fcost[a]) {
+                    fcost[a] = c;
+                    heap.push(Double.doubleToLongBits(c), a);
+                }
+            }
+        }
+    }
+
+    /**
+     * The earlier cost estimate, kept for tasks with disjunctive or conditional conditions: the same
+     * costs, computed by relaxing every operator in every layer.
+     */
+    double estimateCostByLayers(BitSet facts, double[] values) {
         int nf = task.factNames.size();
         double[] fcost = new double[nf];
         java.util.Arrays.fill(fcost, Double.POSITIVE_INFINITY);
@@ -314,7 +690,12 @@ final class NumericHeuristic {
         return true;
     }
 
-    int estimate(BitSet facts, double[] values) {
+    /**
+     * The layer estimate computed as Metric-FF's graph is defined, every operator visited in every layer:
+     * the reference {@link #estimate} is checked against ({@code NumericHeuristicTest}); quadratic, so not
+     * used by the search.
+     */
+    int estimateByLayers(BitSet facts, double[] values) {
         BitSet reached = (BitSet) facts.clone();
         double[] lo = values.clone();
         double[] hi = values.clone();

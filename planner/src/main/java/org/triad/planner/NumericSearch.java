@@ -40,6 +40,20 @@ final class NumericSearch {
     /** ... and never more than this many. */
     static final long IMPROVEMENT_MAX_EVALUATIONS = 100_000;
     private static final int[] WEIGHTS = { 5, 3, 2, 1 };
+    /** The A* probe before the restarts may evaluate this many times the states the first plan needed, plus {@link #PROBE_MIN_EVALUATIONS}. */
+    static final long PROBE_FACTOR = 2;
+    static final long PROBE_MIN_EVALUATIONS = 2_000;
+    /** States the A* search before the first greedy one may evaluate (a metric that only grows, or none). */
+    static final long EXACT_FIRST_EVALUATIONS = 100_000;
+    /**
+     * ... and of them at most this many with facts not met before (whose bound is computed, not looked
+     * up): a robot's states are many charge levels over few places, so the many are cheap.
+     */
+    static final long EXACT_FIRST_BOUNDS = 2_000;
+    /** ... and when the goal is numbers only, whose bound is 0 (a breadth-first search then: counters' shortest plans). */
+    static final long EXACT_FIRST_BLIND_EVALUATIONS = 10_000;
+    /** The weight on h_add of the weighted A* that looks for a cheap first plan when the A* above gives up. */
+    static final int ADDITIVE_WEIGHT = 2;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
@@ -131,8 +145,41 @@ final class NumericSearch {
                     + task.undefinedNote(), stats(groundMs, searchStart, 0, 1));
         }
         long[] evaluations = { 1 };
-        Run first = search(task, h, init, h0, 0, Double.POSITIVE_INFINITY, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations);
-        long expanded = first.expanded;
+        NumericDominance dominance = NumericDominance.of(task);
+        Estimates cache = new Estimates();
+        if (task.metric == null || h.metricOnlyGrows()) {
+            // A* on the admissible bound (looked up by the facts, so cheap per state) on a small budget first:
+            // a robot's route with a battery is solved optimally here, before any greedy search
+            Run exact = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, true, EXPANSION_BUDGET,
+                    evaluations[0] + (h.goalHasFacts() ? EXACT_FIRST_EVALUATIONS : EXACT_FIRST_BLIND_EVALUATIONS), deadline, evaluations, cache,
+                    h.boundsComputed() + EXACT_FIRST_BOUNDS, 0);
+            SolveResult.Stats st = stats(groundMs, searchStart, exact.expanded, evaluations[0]);
+            if (exact.outcome == Outcome.FOUND) return SolveResult.solved(plan(task, opsTo(exact.nodes, exact.goal)), st);
+            if (exact.outcome == Outcome.EXHAUSTED) {
+                return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + exact.faultNote(task), st);
+            }
+            if (exact.outcome == Outcome.TIMEOUT) {
+                String note = task.undefinedNote() + exact.faultNote(task);
+                return note.isEmpty() ? SolveResult.timeout(st) : new SolveResult(SolveResult.Status.TIMEOUT, null, "time limit reached" + note, st);
+            }
+        }
+        long expanded = 0;
+        Run first = null;
+        boolean byFacts = dominance.resourcesOnly && h.goalHasFacts();
+        if ((task.metric == null || h.metricOnlyGrows()) && byFacts) {
+            // numbers that are resources only: weighted A* on h_add over the facts (also looked up by the facts),
+            // on the same small budget; a delivery, whose bound above sees only the longer of its two legs,
+            // gets a cheap plan here
+            Run cheap = search(task, h, dominance, init, h0, 1, Double.POSITIVE_INFINITY, true, false, false, EXPANSION_BUDGET,
+                    evaluations[0] + EXACT_FIRST_EVALUATIONS, deadline, evaluations, cache, h.boundsComputed() + EXACT_FIRST_BOUNDS, ADDITIVE_WEIGHT);
+            expanded += cheap.expanded;
+            if (cheap.outcome == Outcome.FOUND) first = cheap;
+        }
+        if (first == null) {
+            first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache,
+                    Long.MAX_VALUE, 0);
+            expanded += first.expanded;
+        }
         if (first.outcome == Outcome.EXHAUSTED) {
             return SolveResult.unsolvable("search space exhausted" + task.undefinedNote() + first.faultNote(task), stats(groundMs, searchStart, expanded, evaluations[0]));
         }
@@ -150,15 +197,41 @@ final class NumericSearch {
             double bestCost = byLength ? best.size() : metricOf(task, init, best);
             long budget = byLength ? Math.min(LENGTH_MAX_EVALUATIONS, Math.max(LENGTH_MIN_EVALUATIONS, LENGTH_FACTOR * evaluations[0]))
                     : Math.min(IMPROVEMENT_MAX_EVALUATIONS, Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_FACTOR * evaluations[0]));
-            long limit = evaluations[0] + budget;
+            long firstWork = evaluations[0];
             boolean monotone = byLength || h.metricOnlyGrows();
-            for (int k = 0; k < WEIGHTS.length; k++) {
+            boolean proven = false;
+            if (monotone) {
+                // A* on the admissible bound first, on a small share: on a robot's route (a bound near the
+                // true cost, states pruned by dominance) it proves a plan optimal in a few hundred states,
+                // where the restarts below would evaluate thousands; otherwise little is lost
+                long probe = evaluations[0] + Math.min(budget / WEIGHTS.length, PROBE_FACTOR * firstWork + PROBE_MIN_EVALUATIONS);
+                Run r = search(task, h, dominance, init, h0, 1, bestCost - task.metricValue(init.values), true, false, true, EXPANSION_BUDGET, probe, deadline,
+                        evaluations, cache, Long.MAX_VALUE, 0);
+                expanded += r.expanded;
+                if (r.outcome == Outcome.TIMEOUT) cutShort = true;
+                if (r.outcome == Outcome.FOUND) {
+                    List<Integer> plan = eliminateRedundant(task, init, opsTo(r.nodes, r.goal));
+                    double cost = byLength ? plan.size() : metricOf(task, init, plan);
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = plan;
+                    }
+                }
+                proven = r.outcome == Outcome.FOUND || r.outcome == Outcome.EXHAUSTED;
+            }
+            // the restarts get the whole budget, the probe's work on top of it
+            long limit = evaluations[0] + budget;
+            for (int k = 0; k < WEIGHTS.length && !proven && !cutShort; k++) {
                 int w = WEIGHTS[k];
                 if (evaluations[0] >= limit) break;
                 // each restart gets an equal share of what is left: a greedy one that cannot beat the bound
                 // must not starve the less greedy ones that can
                 long share = evaluations[0] + (limit - evaluations[0]) / (WEIGHTS.length - k);
-                Run r = search(task, h, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone, EXPANSION_BUDGET, share, deadline, evaluations);
+                // weight 1 is A* on the cost estimate (not admissible, but it finds what the bound's A* probe could not afford);
+                // with numbers that are resources only, the weighted ones are ordered by h_add over the facts, looked up
+                // rather than computed (weight 1 keeps the cost estimate: on IPC delivery p2 it finds 36 where h_add gets 42)
+                Run r = search(task, h, dominance, init, h0, w, monotone ? bestCost - task.metricValue(init.values) : Double.POSITIVE_INFINITY, true, !monotone,
+                        false, EXPANSION_BUDGET, share, deadline, evaluations, cache, Long.MAX_VALUE, byFacts && monotone && w > 1 ? w : 0);
                 expanded += r.expanded;
                 if (r.outcome == Outcome.TIMEOUT) {
                     cutShort = true;
@@ -172,8 +245,8 @@ final class NumericSearch {
                         best = plan;
                     }
                 }
-                // an exhausted A* (weight 1) under the bound proves the best plan optimal (for an admissible estimate)
-                if (r.outcome == Outcome.EXHAUSTED && w == 1) break;
+                // an exhausted search under the bound, pruned by an admissible bound, proves the best plan optimal
+                if (r.outcome == Outcome.EXHAUSTED && monotone) break;
             }
         }
         SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
@@ -187,8 +260,18 @@ final class NumericSearch {
      * smaller, such as a battery to keep high) the estimate is the layer one and the search goes on past
      * goal states until its budget ends, returning the best goal state it met.
      */
-    private static Run search(NumericTask task, NumericHeuristic h, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
-                              long maxExpansions, long maxEvaluations, long deadline, long[] evaluations) {
+    private static Run search(NumericTask task, NumericHeuristic h, NumericDominance dominance, Key init, int h0, int weight, double bound, boolean reopen, boolean allGoals,
+                              boolean exact, long maxExpansions, long maxEvaluations, long deadline, long[] evaluations, Estimates cache,
+                              long maxBounds, int additive) {
+        // with a bound on a metric that only grows, a state whose cost plus an admissible estimate of the
+        // rest reaches the bound cannot lead to a better plan; slack absorbs rounding in sums of costs
+        boolean prune = bound != Double.POSITIVE_INFINITY && !allGoals;
+        boolean unit = task.metric == null;
+        double limit = bound - 1e-9 * Math.max(1, Math.abs(bound));
+        OpIndex successors = OpIndex.of(task);
+        // states with the same facts and other values, by their rest: one with more charge (less load) and
+        // a metric no larger makes the other unnecessary (NumericDominance)
+        Map<Key, List<Integer>> frontier = dominance.any ? new HashMap<>() : null;
         Run run = new Run();
         List<Node> nodes = run.nodes;
         Map<Key, Integer> seen = new HashMap<>();
@@ -200,9 +283,10 @@ final class NumericSearch {
             return Long.compare(a.order, b.order);
         });
         double base = task.metricValue(init.values);
-        double f0 = weight == 0 ? h0 : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
+        double f0 = additive > 0 ? additive * h.additive(init.facts, unit) : weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
         nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
+        if (frontier != null) frontier.computeIfAbsent(new Key(init.facts, init.values, dominance.outsideRest), k -> new ArrayList<>()).add(0);
         open.add(0);
         while (!open.isEmpty()) {
             int id = open.poll();
@@ -222,11 +306,11 @@ final class NumericSearch {
                 run.outcome = Outcome.TIMEOUT;
                 return run;
             }
-            if (++run.expanded > maxExpansions || evaluations[0] >= maxEvaluations) {
+            if (++run.expanded > maxExpansions || evaluations[0] >= maxEvaluations || h.boundsComputed() >= maxBounds) {
                 run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.LIMIT;
                 return run;
             }
-            for (int o = 0; o < task.ops.size(); o++) {
+            for (int o : successors.candidates(n.state.facts)) {
                 NumericTask.Op op = task.ops.get(o);
                 if (!holds(op.pre(), n.state)) continue;
                 Key next = apply(op, n.state, task.accumulator);
@@ -238,14 +322,33 @@ final class NumericSearch {
                 Integer old = seen.get(next);
                 if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;
                 if (g >= bound) continue;
-                int hv = h.estimate(next.facts, next.values);
+                List<Integer> rivals = null;
+                if (frontier != null) {
+                    rivals = frontier.computeIfAbsent(new Key(next.facts, next.values, dominance.outsideRest), k -> new ArrayList<>());
+                    if (dominated(rivals, nodes, seen, dominance, next, g)) continue;
+                }
+                double lb = prune || exact ? h.lowerBound(next.facts, unit) : 0;
+                if (prune && g + lb >= limit) continue;
+                if (lb == Double.POSITIVE_INFINITY) {
+                    seen.put(next, -1); // the goal's facts are out of reach even without deletes
+                    continue;
+                }
+                // the exact search orders by g + the bound alone (the bound depends on the facts only, so it is
+                // mostly looked up); the others evaluate the relaxed graph, once per state over all restarts
+                double ha = additive > 0 ? h.additive(next.facts, unit) : 0;
+                if (ha == Double.POSITIVE_INFINITY) {
+                    seen.put(next, -1);
+                    continue;
+                }
+                int hv = additive > 0 ? (int) Math.min(ha, Integer.MAX_VALUE - 1) : exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1) : cache.estimate(h, next);
                 evaluations[0]++;
                 if (hv == NumericHeuristic.DEAD_END) {
                     seen.put(next, -1);
                     continue;
                 }
-                double fv = weight == 0 ? hv : g + weight * (allGoals ? hv : h.estimateCost(next.facts, next.values));
+                double fv = additive > 0 ? g + additive * ha : weight == 0 ? hv : exact ? g + lb : g + weight * (allGoals ? hv : cache.estimateCost(h, next));
                 seen.put(next, nodes.size());
+                if (rivals != null) admit(rivals, nodes, dominance, next, g, nodes.size());
                 nodes.add(new Node(next, id, o, g, fv, hv, nodes.size()));
                 open.add(nodes.size() - 1);
             }
@@ -253,6 +356,58 @@ final class NumericSearch {
         run.outcome = run.goal >= 0 ? Outcome.FOUND : Outcome.EXHAUSTED;
         return run;
     }
+
+    /**
+     * The relaxed graph's estimates of the states met so far: the restarts meet the same states again,
+     * and a state's estimates do not depend on the accumulators its key leaves out (no condition reads
+     * them). Bounded: past {@link #CACHED} states nothing more is kept.
+     */
+    private static final class Estimates {
+        private static final int CACHED = 1_000_000;
+        private final Map<Key, Integer> layers = new HashMap<>();
+        private final Map<Key, Double> costs = new HashMap<>();
+
+        int estimate(NumericHeuristic h, Key s) {
+            Integer v = layers.get(s);
+            if (v != null) return v;
+            int e = h.estimate(s.facts, s.values);
+            if (layers.size() < CACHED) layers.put(s, e);
+            return e;
+        }
+
+        double estimateCost(NumericHeuristic h, Key s) {
+            Double v = costs.get(s);
+            if (v != null) return v;
+            double e = h.estimateCost(s.facts, s.values);
+            if (costs.size() < CACHED) costs.put(s, e);
+            return e;
+        }
+    }
+
+    /** Whether a live state of the same rest has at least as good resources at no greater metric. */
+    private static boolean dominated(List<Integer> rivals, List<Node> nodes, Map<Key, Integer> seen, NumericDominance dominance, Key next, double g) {
+        for (int r : rivals) {
+            Node m = nodes.get(r);
+            if (m.g <= g && dominance.covers(m.state.values, next.values) && !m.state.equals(next)) return true;
+        }
+        return false;
+    }
+
+    /** Adds a state to its rest's rivals, dropping those it dominates (they stay in the open list, but no longer prune). */
+    private static void admit(List<Integer> rivals, List<Node> nodes, NumericDominance dominance, Key next, double g, int id) {
+        rivals.removeIf(r -> {
+            Node m = nodes.get(r);
+            return g <= m.g && dominance.covers(next.values, m.state.values);
+        });
+        if (rivals.size() < MAX_RIVALS) rivals.add(id);
+    }
+
+    /**
+     * States kept per rest to compare against: when every fluent is a resource, all states of a task whose
+     * facts never change share one rest, and comparing each with all would be quadratic. Fewer rivals
+     * prune less, never wrongly.
+     */
+    private static final int MAX_RIVALS = 16;
 
     /** The metric's value at the end of {@code plan} (the plan is valid). */
     private static double metricOf(NumericTask task, Key init, List<Integer> plan) {
@@ -355,5 +510,61 @@ final class NumericSearch {
     /** NaN for an undefined fluent or a division by zero: every comparison with it is false. */
     private static double value(NumericTask.Expr e, double[] values) {
         return NumericTask.value(e, values);
+    }
+
+    /**
+     * The operators worth trying in a state: each indexed under one positive fact of its precondition
+     * (a move under the robot's place), the others always; in operator order, so successors come in the
+     * same order as when every operator is tried.
+     */
+    private static final class OpIndex {
+        private final int[][] byFact;
+        private final int[] always;
+        private OpIndex(int[][] byFact, int[] always) {
+            this.byFact = byFact;
+            this.always = always;
+        }
+
+        static OpIndex of(NumericTask task) {
+            int nf = task.factNames.size();
+            int[] count = new int[nf];
+            int[] anchor = new int[task.ops.size()];
+            List<Integer> free = new ArrayList<>();
+            for (int o = 0; o < anchor.length; o++) {
+                anchor[o] = anchorOf(task.ops.get(o).pre());
+                if (anchor[o] < 0) free.add(o);
+                else count[anchor[o]]++;
+            }
+            int[][] byFact = new int[nf][];
+            for (int f = 0; f < nf; f++) byFact[f] = new int[count[f]];
+            int[] fill = new int[nf];
+            for (int o = 0; o < anchor.length; o++) if (anchor[o] >= 0) byFact[anchor[o]][fill[anchor[o]]++] = o;
+            return new OpIndex(byFact, free.stream().mapToInt(Integer::intValue).toArray());
+        }
+
+        /** The first positive fact of a precondition's top-level conjunction, -1 if it has none. */
+        private static int anchorOf(NumericTask.Cond pre) {
+            if (pre instanceof NumericTask.Fact f && f.positive()) return f.id();
+            if (pre instanceof NumericTask.All a) {
+                for (NumericTask.Cond c : a.parts()) if (c instanceof NumericTask.Fact f && f.positive()) return f.id();
+            }
+            return -1;
+        }
+
+        /** The candidates in ascending order (a fresh array: the search's loop may call this again before it ends). */
+        int[] candidates(BitSet facts) {
+            int n = always.length;
+            for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) if (f < byFact.length) n += byFact[f].length;
+            int[] out = new int[n];
+            System.arraycopy(always, 0, out, 0, always.length);
+            int k = always.length;
+            for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
+                if (f >= byFact.length) continue;
+                System.arraycopy(byFact[f], 0, out, k, byFact[f].length);
+                k += byFact[f].length;
+            }
+            Arrays.sort(out);
+            return out;
+        }
     }
 }
