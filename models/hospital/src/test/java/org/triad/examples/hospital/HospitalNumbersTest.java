@@ -84,4 +84,19 @@ class HospitalNumbersTest {
                 .map(s -> ((Status.ActionSucceeded) s).action()).map(a -> a.action() + a.args().toString().replace('[', '(').replace(']', ')'))
                 .toList();
     }
+
+    @Test
+    void theChargedGoalIsPddlThatMetricFfAndValRead() {
+        HospitalSimulation h = new HospitalSimulation(1);
+        org.triad.runtime.app.State state = new generated.hospital.HospitalStateProvider(h.courier(), h.building()).currentState();
+        org.triad.runtime.schema.ModelGoal charged = new org.triad.runtime.schema.ModelGoal(generated.hospital.HospitalSchema.SCHEMA, "Charged",
+                List.of(h.objects().room("lobby")));
+        String problem = new org.triad.runtime.schema.PddlTranslator(generated.hospital.HospitalSchema.SCHEMA)
+                .translate(state, charged.schema(), charged.binding()).problemText();
+        // battery() >= 100.0 over the values a battery can have: only doubles (an int constant is a type error for
+        // Metric-FF), and no case decided now left as an empty (and) or (or), which neither Metric-FF nor VAL reads
+        String goal = problem.substring(problem.indexOf("(:goal"));
+        assertTrue(goal.contains("(courier-battery dbl-100-0)"), goal);
+        assertFalse(goal.contains("int-") || goal.contains("(and)") || goal.contains("(or)"), goal);
+    }
 }
