@@ -153,7 +153,22 @@ class PharmacyQuantitiesTest {
 		ModelGoal second = new ModelGoal(schema, "Delivered", objects(flat, "saline", "wardB"));
 		GoalSolver.Outcome o = new GoalSolver(schema).plan(first, List.of(second), flat);
 		assertNull(o.plan());
-		assertTrue(o.failure().startsWith("Delivered(morphine, wardA) unreachable: Courier.battery() is 12.0"), o.failure());
+		// the need is what the shortest trip draws with the battery plentiful: pharmacy - corridor - wardA, 10 + 10 m
+		assertTrue(o.failure().startsWith("Delivered(morphine, wardA) unreachable: Courier.battery() is 12.0 and the trip needs 20.0, "
+				+ "Courier.load() is 0"), o.failure());
+		assertTrue(o.failure().contains(" (no plan"), o.failure());
+	}
+
+	@Test
+	void aLimitTooSmallForTheBoxSaysTheTripNeedsMoreOfIt() {
+		State small = morning.toBuilder().value(org.triad.runtime.app.Atom.of("Floor", "limit"), 2)
+				.value(org.triad.runtime.app.Atom.of("Courier", "battery"), 100.0).build();
+		ModelGoal morphine = new ModelGoal(schema, "Delivered", objects(small, "morphine", "wardA"));
+		GoalSolver.Outcome o = new GoalSolver(schema).plan(morphine, List.of(), small);
+		assertNull(o.plan());
+		// the morphine weighs 3: with the limit plentiful it is delivered, and nothing draws the limit down
+		assertTrue(o.failure().contains("Floor.limit() is 2 and the trip needs more"), o.failure());
+		assertTrue(o.failure().contains("Courier.battery() is 100.0,"), o.failure());
 	}
 
 	@Test

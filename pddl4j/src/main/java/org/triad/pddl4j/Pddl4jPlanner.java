@@ -64,6 +64,12 @@ public final class Pddl4jPlanner implements PddlPlanner {
 
     @Override
     public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
+        Domain plain = withoutCosts(domain);
+        if (plain != domain && !org.triad.planner.pddl.NumericParts.isNumeric(plain)
+                && !org.triad.planner.pddl.NumericParts.isNumeric(problem.goal())) {
+            domain = plain;
+            problem = new Problem(problem.name(), problem.domainName(), problem.objects(), problem.init(), List.of(), problem.goal(), null);
+        }
         Path dir = null;
         try {
             dir = Files.createTempDirectory("triad-pddl4j");
@@ -93,6 +99,35 @@ public final class Pddl4jPlanner implements PddlPlanner {
                 dir.toFile().delete();
             }
         }
+    }
+
+    /**
+     * The domain without its action costs ({@code (increase (total-cost) ...)}), its functions and the fluent
+     * requirements, or the domain itself when it has no costs. PDDL4J 3.8.3 has no numeric fluents: a problem
+     * whose only numbers are action costs (a hospital whose moves cost their length) is planned without them,
+     * for the fewest steps; one with other numbers is handed over whole, and PDDL4J's error names them.
+     */
+    static Domain withoutCosts(Domain d) {
+        boolean costed = false;
+        List<org.triad.planner.pddl.Action> actions = new ArrayList<>();
+        for (org.triad.planner.pddl.Action a : d.actions()) {
+            List<org.triad.planner.pddl.PddlEffect> effects = new ArrayList<>();
+            for (org.triad.planner.pddl.PddlEffect e : a.effects()) {
+                if (e instanceof org.triad.planner.pddl.PddlEffect.Increase
+                        || e instanceof org.triad.planner.pddl.PddlEffect.NumericEffect n && n.target().name().equals("total-cost")) {
+                    costed = true;
+                } else {
+                    effects.add(e);
+                }
+            }
+            actions.add(new org.triad.planner.pddl.Action(a.name(), a.parameters(), a.precondition(), effects));
+        }
+        if (!costed) {
+            return d;
+        }
+        List<String> requirements = d.requirements().stream()
+                .filter(r -> !List.of(":fluents", ":numeric-fluents", ":action-costs").contains(r)).toList();
+        return new Domain(d.name(), requirements, d.types(), d.constants(), d.predicates(), List.of(), actions, d.axioms());
     }
 
     private SolveResult solveLocked(File d, File p, Duration timeout) throws IOException {

@@ -48,6 +48,31 @@ class Pddl4jPlannerIT {
     }
 
     @Test
+    void movesCostingTheirLengthArePlannedWithoutTheCostsAndOtherNumbersAreAnError() {
+        String costed = """
+                (define (domain costed) (:requirements :strips :typing :fluents)
+                  (:types waypoint)
+                  (:predicates (robot-at ?w - waypoint) (adj ?a ?b - waypoint))
+                  (:functions (distance ?a ?b - waypoint) (total-cost) (battery))
+                  (:action move :parameters (?src ?dst - waypoint) :precondition (and (robot-at ?src) (adj ?src ?dst))
+                    :effect (and (robot-at ?dst) (not (robot-at ?src)) (increase (total-cost) (distance ?src ?dst)))))
+                """;
+        Problem p = PddlParser.parseProblem("""
+                (define (problem p) (:domain costed) (:objects a b c - waypoint)
+                  (:init (robot-at a) (adj a b) (adj b c) (= (distance a b) 4) (= (distance b c) 8) (= (total-cost) 0) (= (battery) 5))
+                  (:goal (robot-at c)) (:metric minimize (total-cost)))
+                """, "p");
+        Domain d = PddlParser.parseDomain(costed, "d");
+        SolveResult r = new Pddl4jPlanner().solve(d, p, Duration.ofSeconds(10));
+        assertEquals(SolveResult.Status.SOLVED, r.status(), r.message());
+        assertTrue(PlanValidator.validate(d, p, r.plan()).valid(), r.plan().toPddl());
+        assertEquals(2, r.plan().steps().size());
+        // a battery the moves need is a number PDDL4J cannot plan with: handed over whole, and refused
+        Domain battery = PddlParser.parseDomain(costed.replace("(adj ?src ?dst))", "(adj ?src ?dst) (>= (battery) 1))"), "d");
+        assertEquals(SolveResult.Status.ERROR, new Pddl4jPlanner().solve(battery, p, Duration.ofSeconds(10)).status());
+    }
+
+    @Test
     void unreachableGoalIsNoPlanAndUnsupportedInputIsAnError() {
         Domain d = PddlParser.parseDomain(DOMAIN, "d");
         Problem island = PddlParser.parseProblem(PROBLEM.replace("(adj c r) (adj r c)", ""), "p");

@@ -171,7 +171,7 @@ class TaskApiTest {
         assertEquals(List.of(), parsed.getMessages(), "validator messages");
         OpenAPI api = parsed.getOpenAPI();
         assertEquals("3.0.3", api.getOpenapi());
-        for (String task : List.of("GoTo", "Patrol", "Fetch", "Deliver", "CollectAndDeliver", "Guide", "Follow")) {
+        for (String task : List.of("GoTo", "Patrol", "Fetch", "Deliver", "CollectAndDeliver", "Guide", "Follow", "Recharge")) {
             assertTrue(api.getComponents().getSchemas().containsKey("Task." + task), task);
         }
         Schema<?> fetchArgs = (Schema<?>) api.getComponents().getSchemas().get("Task.Fetch").getProperties().get("args");
@@ -179,7 +179,7 @@ class TaskApiTest {
         assertEquals(List.of("gauze", "syringe", "bandage", "insulin"), ((Schema<?>) fetchArgs.getProperties().get("i")).getEnum());
         assertEquals(List.of("storage", "xray", "ward1", "ward2", "ward3", "lobby", "pharmacy", "ward4", "ward5"),
                 ((Schema<?>) fetchArgs.getProperties().get("to")).getEnum());
-        assertEquals(7, ((ComposedSchema) api.getComponents().getSchemas().get("TaskSubmission")).getOneOf().size());
+        assertEquals(8, ((ComposedSchema) api.getComponents().getSchemas().get("TaskSubmission")).getOneOf().size());
         assertTrue(api.getPaths().get("/api/tasks").getPost() != null);
     }
 

@@ -20,6 +20,8 @@ import org.triad.runtime.schema.PlanChecker;
 /**
  * The hospital application's PDDL, as the Planner translates it at runtime, is accepted by
  * PDDL4J 3.8.3 (the planner stays pluggable), and PDDL4J's plans pass the model-level plan checker.
+ * PDDL4J has no numeric fluents; the hospital's only numbers are its moves' costs (their length), which
+ * the plug-in leaves out (it plans fewest moves, not fewest metres).
  */
 class Pddl4jOnHospitalTest {
 	private static AppSchema hospital;

@@ -105,16 +105,16 @@ public final class GoalSolver {
 	 * the rest are planned as one lookahead and only the part that reaches {@code goal} is returned, to be
 	 * executed before the next goal is planned again from the observed state. A task that cannot be
 	 * completed at all fails here, before the robot moves, naming the goal that cannot be reached and the
-	 * quantities where it fails. Applications without quantities (numbers the planner computes with) are
-	 * planned goal by goal as before: nothing there is used up by reaching a goal.
+	 * quantities where it fails. Applications whose actions change no quantity (none, or only distances
+	 * charged as costs) are planned goal by goal as before: nothing there is used up by reaching a goal.
 	 */
 	public Outcome plan(GoalInstance goal, List<? extends GoalInstance> then, State from) {
 		Outcome first = plan(goal.name(), goal.args(), from);
-		if (!translator.plansQuantities()) {
+		if (!translator.changesQuantities()) {
 			return first;
 		}
 		if (!first.planned()) {
-			return new Outcome(null, goal.describe() + " unreachable: " + quantitiesIn(from) + "(" + first.failure() + ")");
+			return new Outcome(null, goal.describe() + " unreachable: " + needs(goal, from) + "(" + first.failure() + ")");
 		}
 		if (then.isEmpty()) {
 			return first;
@@ -159,7 +159,7 @@ public final class GoalSolver {
 			if (!m.isSatisfiedIn(state)) {
 				Outcome o = plan(next.name(), next.args(), state);
 				if (!o.planned()) {
-					return next.describe() + " unreachable: " + quantitiesIn(state) + "after " + previous.describe() + " (" + o.failure() + ")";
+					return next.describe() + " unreachable: " + needs(next, state) + "after " + previous.describe() + " (" + o.failure() + ")";
 				}
 				for (var a : o.plan().actions()) {
 					state = transitions.apply(a, state);
@@ -170,16 +170,56 @@ public final class GoalSolver {
 		return null;
 	}
 
-	/** The values of the quantities without arguments (a battery, a load) in a state, as the models name them. */
-	private String quantitiesIn(State state) {
-		StringBuilder b = new StringBuilder();
+	/** A quantity's value standing in for "as much as the trip wants" when its need is measured. */
+	static final double PLENTY = 1e6;
+
+	/**
+	 * The quantities without arguments (a battery, a load) in a state, as the models name them, each with what
+	 * reaching {@code goal} needs of it where that can be measured: {@code Courier.battery() is 12.0 and the trip
+	 * needs 30.0 }. The need is measured on a plan for the goal from the same state with only that quantity
+	 * made plentiful ({@link #PLENTY}): how far that plan draws it down (the least value along the plan, below
+	 * the plentiful start; quantities are separated by commas). Plans are of least cost, so with moves costing
+	 * their length it is what the shortest trip draws, an upper bound on the least need. A quantity the plan
+	 * does not draw down (a payload limit) that the goal is reachable with more of gets "and the trip needs
+	 * more"; one whose plenty does not help is named with its value only.
+	 */
+	private String needs(GoalInstance goal, State state) {
+		List<String> parts = new ArrayList<>();
 		for (var e : state.values().entrySet()) {
 			var atom = e.getKey();
-			if (atom.args().isEmpty() && translator.isQuantity(atom.actor(), atom.property())) {
-				b.append(atom.actor()).append('.').append(atom.property()).append("() is ").append(e.getValue()).append(' ');
+			if (!atom.args().isEmpty() || !translator.isQuantity(atom.actor(), atom.property()) || !(e.getValue() instanceof Number value)) {
+				continue;
 			}
+			StringBuilder b = new StringBuilder();
+			b.append(atom.actor()).append('.').append(atom.property()).append("() is ").append(value);
+			State plenty = state.toBuilder().value(atom, value instanceof Integer ? (Object) (int) PLENTY : (Object) PLENTY).build();
+			Outcome o = plan(goal.name(), goal.args(), plenty);
+			if (o.planned()) {
+				double least = PLENTY;
+				State s = plenty;
+				Transitions transitions = new Transitions(schema);
+				for (var a : o.plan().actions()) {
+					s = transitions.apply(a, s);
+					least = Math.min(least, s.valueOf(atom).map(v -> ((Number) v).doubleValue()).orElse(PLENTY));
+				}
+				double need = PLENTY - least;
+				if (need > 1e-9) {
+					b.append(" and the trip needs ").append(number(need, value instanceof Integer));
+				} else {
+					b.append(" and the trip needs more");
+				}
+			}
+			parts.add(b.toString());
 		}
-		return b.toString();
+		return parts.isEmpty() ? "" : String.join(", ", parts) + " ";
+	}
+
+	/** A need as the models write numbers: an int as an int, a double rounded to 3 decimals ({@code 30.0}, {@code 2.47}). */
+	private static String number(double v, boolean integer) {
+		if (integer) {
+			return Long.toString(Math.round(v));
+		}
+		return Double.toString(Math.round(v * 1000) / 1000.0);
 	}
 
 	public PddlTranslator translator() {

@@ -48,6 +48,14 @@ public final class PddlTranslator {
 		return quantities.any();
 	}
 
+	/**
+	 * Whether an action changes a quantity (a battery, a load), so that reaching a goal can use up what the next
+	 * goal needs; distances only charged as a cost cannot.
+	 */
+	public boolean changesQuantities() {
+		return quantities.anyChanged();
+	}
+
 	/** Whether a property is a quantity. */
 	public boolean isQuantity(String actor, String property) {
 		return quantities.isQuantity(actor, property);
@@ -613,7 +621,16 @@ public final class PddlTranslator {
 					List<Formula> cases = new ArrayList<>();
 					for (Object value : candidates(property(read).type())) {
 						Formula rest = formula(replace(e, read, new Expr.Lit(value)));
-						cases.add(new Formula.And(List.of(atom(read, literal(value, null)), rest)));
+						// a case decided false now is left out, one decided true is the read alone: Metric-FF and
+						// VAL do not read an empty (and) or (or)
+						if (rest instanceof Formula.Or or && or.parts().isEmpty()) {
+							continue;
+						}
+						Formula is = atom(read, literal(value, null));
+						cases.add(rest instanceof Formula.And and && and.parts().isEmpty() ? is : new Formula.And(List.of(is, rest)));
+					}
+					if (cases.isEmpty()) {
+						return new Formula.Or(List.of());
 					}
 					requirements.add(":disjunctive-preconditions");
 					return cases.size() == 1 ? cases.get(0) : new Formula.Or(cases);
@@ -680,7 +697,8 @@ public final class PddlTranslator {
 			List<Object> values = new ArrayList<>();
 			for (Map.Entry<String, String> o : List.copyOf(names.objectsWithTypes().entrySet())) {
 				Object v = names.valueOf(o.getKey());
-				if (numeric ? v instanceof Number : schema.isSubtype(o.getValue(), type)) {
+				// a number of the property's own type: an int constant is not a value of a double property in PDDL
+				if (numeric ? v instanceof Number && o.getValue().equals(type) : schema.isSubtype(o.getValue(), type)) {
 					values.add(v);
 				}
 			}

@@ -88,6 +88,14 @@ final class Quantities {
 		return quantities.contains(actor + "." + property);
 	}
 
+	/**
+	 * Whether an action sets a quantity (a battery drained, a load carried): only then can reaching one goal
+	 * leave too little for the next. Quantities only charged as costs or read (distances) cannot.
+	 */
+	boolean anyChanged() {
+		return schema.actions().stream().flatMap(a -> a.effects().stream()).anyMatch(e -> e.isAssignment() && isQuantity(e.call()));
+	}
+
 	boolean any() {
 		return !quantities.isEmpty();
 	}

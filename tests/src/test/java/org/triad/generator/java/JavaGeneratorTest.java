@@ -185,7 +185,16 @@ class JavaGeneratorTest {
 			StateBackedActors actors = new StateBackedActors(code, schemaOf(code), expected);
 			StateSource provider = (StateSource) code.load(TriadNamesFor(code).stateProviderClass())
 					.getConstructors()[0].newInstance(actors.robot, actors.world);
-			State observed = provider.currentState();
+			State read = provider.currentState();
+			// the provider reads a number for every argument; those the situation leaves unstated (the hospital's
+			// distances between waypoints without a corridor) are the binding's 0 and are left out here
+			State.Builder stated = read.toBuilder();
+			for (var e : read.values().entrySet()) {
+				if (expected.valueOf(e.getKey()).isEmpty() && !e.getKey().args().isEmpty() && e.getValue() instanceof Number n && n.doubleValue() == 0) {
+					stated.retract(e.getKey());
+				}
+			}
+			State observed = stated.build();
 			assertEquals(expected, observed, () -> app[1] + ": observed " + observed);
 			assertTrue(actors.executed.isEmpty());
 		}

@@ -71,6 +71,11 @@ final class StateBackedActors {
 			return state.holds(atom);
 		}
 		Object value = state.valueOf(atom).orElse(null);
+		if (value == null && (m.getReturnType() == double.class || m.getReturnType() == int.class)) {
+			// a number a situation leaves unstated (a distance between waypoints without a corridor): a binding
+			// returns some number for it, here 0
+			return m.getReturnType() == double.class ? (Object) 0.0 : (Object) 0;
+		}
 		if (value instanceof EnumValue e && m.getReturnType().isEnum()) {
 			return Arrays.stream(m.getReturnType().getEnumConstants()).filter(c -> ((Enum<?>) c).name().equals(e.literal())).findFirst().orElseThrow();
 		}

@@ -96,6 +96,9 @@ public final class HospitalDemo implements Callable<Integer> {
 					second.completed() ? "Completed" : "Aborted", hospital.sim().item("insulin").room().map(r -> r.name()).orElse("no room"),
 					second.simSeconds());
 		}
+		w.printf(Locale.ROOT, "battery %.1f %% (%.0f J per metre driven of %.0f kJ; the Recharge task charges it at the dock in the %s)%n",
+				hospital.courier().battery(), hospital.courier().robot().battery().joulesPerMetre(),
+				hospital.courier().robot().battery().capacityJoules() / 1000, HospitalBuilding.DOCK);
 		w.println("Pictures written to " + out.toAbsolutePath().normalize() + ":");
 		w.println("  " + pictures.get(0).getFileName() + "   the trajectory with numbered action markers");
 		w.println("  " + pictures.get(1).getFileName() + "   an animated replay");

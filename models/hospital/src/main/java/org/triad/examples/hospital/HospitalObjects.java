@@ -17,6 +17,9 @@ import generated.hospital.domain.WayPoint;
  * name, so that the state provider, the planner and the tasks all speak of the same objects.
  */
 public final class HospitalObjects {
+    /** The most a courier may carry, kg (the models' {@code Courier.payload()}, the factsheet's {@code maxLoadMass}). */
+    public static final int PAYLOAD_KG = 5;
+
     private final Map<String, WayPoint> wayPoints = new LinkedHashMap<>();
     private final Map<String, Room> rooms = new LinkedHashMap<>();
     private final Map<String, Item> items = new LinkedHashMap<>();

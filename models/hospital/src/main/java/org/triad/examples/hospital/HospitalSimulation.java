@@ -59,6 +59,8 @@ public final class HospitalSimulation {
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
         floor.equip(sim);
         Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, RobotSpec.defaults());
+        // the models' dock (Building.dock(lobby)), where the courier charges
+        sim.addDock(HospitalBuilding.DOCK, floor.plan().waypoint(HospitalBuilding.DOCK).position());
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
         Whereabouts whereabouts = new Whereabouts(floor);
@@ -114,10 +116,13 @@ public final class HospitalSimulation {
         return new HospitalRun(run, entries.subList(logStart, entries.size()), sim.time() - simStart, wall);
     }
 
-    /** The robot's position and model waypoint, for progress output: {@code (4.00, 14.20) at c1}. */
+    /**
+     * The robot's position, model waypoint and battery, for progress output:
+     * {@code (4.00, 14.20) at c1, battery 99.7 %}.
+     */
     public String robotWhereabouts() {
         Vec2 p = courier.robot().position();
-        return String.format(Locale.ROOT, "(%.2f, %.2f) at %s", p.x(), p.y(), courier.loc());
+        return String.format(Locale.ROOT, "(%.2f, %.2f) at %s, battery %.1f %%", p.x(), p.y(), courier.loc(), courier.battery());
     }
 
     /**

@@ -58,6 +58,37 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         return floor.doorsOn(route.get()).stream().noneMatch(robot.knownClosedDoors()::contains);
     }
 
+    /**
+     * The length of the model edge's route, metres; between waypoints without an edge (no move plans with it) the
+     * straight line.
+     */
+    @Override
+    public double distance(WayPoint a, WayPoint b) {
+        return routeLength(floor, a.name(), b.name());
+    }
+
+    /** The length of the model edge's route between two model waypoints, metres (the straight line if there is no edge). */
+    public static double routeLength(HospitalFloor floor, String a, String b) {
+        List<String> route = floor.route(a, b).orElse(List.of(a, b));
+        double metres = 0;
+        for (int k = 1; k < route.size(); k++) {
+            metres += floor.plan().waypoint(route.get(k - 1)).position().distance(floor.plan().waypoint(route.get(k)).position());
+        }
+        return metres;
+    }
+
+    /** Whether the simulation has a charging dock at the waypoint. */
+    @Override
+    public boolean dock(WayPoint w) {
+        return sim.docks().containsKey(w.name());
+    }
+
+    /** The item's weight, kg (its class attribute). */
+    @Override
+    public int weight(Item i) {
+        return i.getWeight();
+    }
+
     /** The item lies (nobody carries it, nobody took it away) in the room or at the corridor waypoint. */
     @Override
     public boolean itemAt(Item i, WayPoint w) {

@@ -7,8 +7,10 @@ import java.util.Set;
 import java.util.TreeSet;
 
 import org.triad.sim.ActionResult;
+import org.triad.sim.Battery;
 import org.triad.sim.Robot;
 import org.triad.sim.Simulation;
+import org.triad.sim.Vec2;
 
 import generated.hospital.IRobot;
 import generated.hospital.domain.Item;
@@ -54,6 +56,40 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
             return false;
         }
         return arrived(robot.moveAlong(route.get()), dst);
+    }
+
+    /**
+     * Charges the battery full at the dock at {@code w}: drives the last metres onto the dock if it stands beside it,
+     * then stands still while the simulation charges it. Fails (logged) where there is no dock or the battery does
+     * not charge there.
+     */
+    @Override
+    public boolean recharge(WayPoint w) {
+        String call = "recharge(" + w + ")";
+        if (!isAt(call, w)) {
+            return false;
+        }
+        Vec2 dock = sim.docks().get(w.name());
+        if (dock == null) {
+            log.refused(sim.time(), call, "there is no charging dock at " + w + "; docks: " + sim.docks().keySet());
+            return false;
+        }
+        if (dock.distance(robot.position()) > Simulation.DOCK_RANGE && !record(robot.moveTo(w.name())).success()) {
+            return false;
+        }
+        Battery battery = robot.battery();
+        for (int attempt = 0; attempt < 3 && battery.percent() < 100; attempt++) {
+            double seconds = (battery.capacityJoules() - battery.energyJoules()) / Math.max(battery.chargingWatts(), 1e-9);
+            if (!record(robot.waitFor(Math.min(seconds + 2 * sim.stepSeconds(), 24 * 3600))).success()) {
+                return false;
+            }
+        }
+        if (battery.percent() < 100) {
+            log.refused(sim.time(), call, String.format(java.util.Locale.ROOT, "the battery does not charge at %s (%.1f %%)", w,
+                    battery.percent()));
+            return false;
+        }
+        return true;
     }
 
     /** Picks the item; first gets within reach of it if it lies further away than the robot's reach. */
@@ -118,6 +154,18 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
     @Override
     public WayPoint loc() {
         return objects.waypoint(whereabouts.of(robot.name(), robot.position()));
+    }
+
+    /** The simulated battery's state of charge, percent. */
+    @Override
+    public double battery() {
+        return robot.battery().percent();
+    }
+
+    /** The most it may carry, kg ({@link HospitalObjects#PAYLOAD_KG}). */
+    @Override
+    public int payload() {
+        return HospitalObjects.PAYLOAD_KG;
     }
 
     @Override

@@ -25,7 +25,7 @@ class HospitalDemoTest {
 		List<String> lines = Arrays.asList(out.toString().split("\\R"));
 		assertEquals(0, code, out + err.toString());
 		assertTrue(lines.contains("[   0.0 s] task CollectAndDeliver(gauze, storage, ward1) started"), out::toString);
-		assertTrue(lines.contains("[  25.5 s] action Courier.move(c1, storage) succeeded; robot (4.00, 17.88) at storage"), out::toString);
+		assertTrue(lines.contains("[  25.5 s] action Courier.move(c1, storage) succeeded; robot (4.00, 17.88) at storage, battery 99.7 %"), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
 		assertTrue(lines.contains("gauze is now in ward1"), out::toString);

@@ -21,7 +21,7 @@ final class HospitalFactsheet {
                 .put("manufacturer", MasterControl.TRIAD).put("serialNumber", serial);
         ObjectNode type = f.putObject("typeSpecification");
         type.put("seriesName", "Triad simulated courier").put("seriesDescription", "a courier of the dyn4j hospital simulation")
-                .put("agvKinematic", "DIFF").put("agvClass", "CARRIER").put("maxLoadMass", 5);
+                .put("agvKinematic", "DIFF").put("agvClass", "CARRIER").put("maxLoadMass", org.triad.examples.hospital.HospitalObjects.PAYLOAD_KG);
         type.putArray("localizationTypes").add("NATURAL");
         type.putArray("navigationTypes").add("AUTONOMOUS");
         f.putObject("physicalParameters").put("speedMin", 0).put("speedMax", spec.maxSpeed()).put("accelerationMax", spec.maxAcceleration())
@@ -45,6 +45,7 @@ final class HospitalFactsheet {
                 .put("key", "doorId").put("valueDataType", "STRING");
         action(actions, "ride", "rides the building's lift from landing to landing (this simulated building brings it)", "EDGE").addObject()
                 .put("key", "liftId").put("valueDataType", "STRING");
+        action(actions, "startCharging", "charges the battery full at the node's dock", "NODE");
         action(actions, "cancelOrder", "stops at the next node and drops the rest of the order", "INSTANT");
         action(actions, "startPause", "holds still", "INSTANT");
         action(actions, "stopPause", "goes on", "INSTANT");

@@ -361,8 +361,8 @@ public final class SimulatedAgv implements AutoCloseable {
                 return Optional.of("validationError: node '" + n.nodeId() + "' is not on the hospital map " + floor.modelWaypoints());
             }
             for (Action a : n.actions()) {
-                if (!List.of("pick", "drop", "startFollowing").contains(a.actionType())) {
-                    return Optional.of("validationError: node action '" + a.actionType() + "' is not supported (pick, drop, startFollowing)");
+                if (!List.of("pick", "drop", "startFollowing", "startCharging").contains(a.actionType())) {
+                    return Optional.of("validationError: node action '" + a.actionType() + "' is not supported (pick, drop, startFollowing, startCharging)");
                 }
             }
         }
@@ -502,6 +502,7 @@ public final class SimulatedAgv implements AutoCloseable {
                 ok = switch (a.actionType()) {
                     case "pick" -> courier.robotActor().pick(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
                     case "drop" -> courier.robotActor().drop(objects.item(parameter(a, "loadId", HospitalFloor.ITEMS)), w);
+                    case "startCharging" -> courier.robotActor().recharge(w);
                     default -> courier.robotActor().startFollowing(objects.person(parameter(a, "personId", HospitalFloor.PEOPLE.keySet())), w);
                 };
                 why = ok ? null : courier.log().lastFailure().orElse("failed");

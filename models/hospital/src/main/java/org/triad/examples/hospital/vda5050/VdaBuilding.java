@@ -57,6 +57,24 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
                 .noneMatch(i -> i.infoReferences().stream().anyMatch(r -> r.referenceValue().equals(edge)))).orElse(true);
     }
 
+    /** The model edge's route length, metres (as the simulated building's). */
+    @Override
+    public double distance(WayPoint a, WayPoint b) {
+        return org.triad.examples.hospital.SimulatedBuilding.routeLength(floor, a.name(), b.name());
+    }
+
+    /** The hospital's dock ({@link org.triad.examples.hospital.HospitalBuilding#DOCK}). */
+    @Override
+    public boolean dock(WayPoint w) {
+        return w.name().equals(org.triad.examples.hospital.HospitalBuilding.DOCK);
+    }
+
+    /** The item's weight, kg (its class attribute). */
+    @Override
+    public int weight(Item i) {
+        return i.getWeight();
+    }
+
     @Override
     public boolean itemAt(Item i, WayPoint w) {
         return knowledge.itemAt(i.name()).map(w.name()::equals).orElse(false);

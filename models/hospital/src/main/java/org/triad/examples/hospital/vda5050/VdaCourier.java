@@ -43,6 +43,12 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return traffic == null ? agv.drive(src.name(), dst.name()) : agv.driveRoute(List.of(src.name(), dst.name()), traffic);
     }
 
+    /** VDA 5050's {@code startCharging} at the node: the AGV finishes it when its battery is full. */
+    @Override
+    public boolean recharge(WayPoint w) {
+        return agv.nodeAction(w.name(), "startCharging", Map.of());
+    }
+
     @Override
     public boolean pick(Item i, WayPoint w) {
         boolean ok = agv.nodeAction(w.name(), "pick", Map.of("loadId", i.name()));
@@ -79,6 +85,22 @@ public final class VdaCourier implements IRobot, FailureExplaining {
     @Override
     public WayPoint loc() {
         return objects.waypoint(state().lastNodeId());
+    }
+
+    /** The AGV's last {@code batteryState.batteryCharge}, percent. */
+    @Override
+    public double battery() {
+        AgvState s = state();
+        if (s.batteryState() == null) {
+            throw new IllegalStateException("AGV " + agv.name() + " reports no batteryState: its battery cannot be planned with");
+        }
+        return s.batteryState().batteryCharge();
+    }
+
+    /** The factsheet's {@code maxLoadMass}, kg. */
+    @Override
+    public int payload() {
+        return HospitalObjects.PAYLOAD_KG;
     }
 
     @Override

@@ -1,0 +1,102 @@
+package org.triad.examples.hospital;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+import org.triad.refarc.Status;
+
+import generated.hospital.tasks.Recharge;
+
+/**
+ * The hospital's numbers (issue #22) on the simulated robot: the situations' corridor lengths are the
+ * simulated building's, moves cost their length, the courier reads its battery from the simulation, and
+ * the {@code Recharge} task the service sends a courier running low charges it full at the dock.
+ */
+class HospitalNumbersTest {
+    private static final Path MODELS = Path.of("src", "main", "models");
+    private static final Pattern DISTANCE = Pattern.compile("Building\\.distance\\((\\w+), (\\w+)\\) == ([0-9.]+);");
+
+    @Test
+    void theSituationsCorridorLengthsAreTheSimulatedBuildingsToADecimetre() throws IOException {
+        HospitalFloor floor = new HospitalFloor();
+        for (String situation : List.of("Morning.state", "Evening.state", "Shortage.state")) {
+            Matcher m = DISTANCE.matcher(Files.readString(MODELS.resolve(situation)));
+            int edges = 0;
+            while (m.find()) {
+                double metres = SimulatedBuilding.routeLength(floor, m.group(1), m.group(2));
+                assertEquals(metres, Double.parseDouble(m.group(3)), 0.1, situation + ": " + m.group());
+                assertTrue(floor.route(m.group(1), m.group(2)).isPresent(), situation + ": no corridor for " + m.group());
+                edges++;
+            }
+            assertTrue(edges >= 24, situation + " states the length of every corridor, found " + edges);
+        }
+    }
+
+    @Test
+    void theCourierReadsItsBatteryAndTheRechargeTaskChargesItFullAtTheDock() {
+        HospitalSimulation h = new HospitalSimulation(1);
+        HospitalObjects o = h.objects();
+        SimulatedCourier courier = h.courier();
+        assertEquals(100.0, courier.battery(), 1e-9);
+        assertTrue(h.building().dock(o.room("lobby")));
+        assertFalse(h.building().dock(o.waypoint("c4")));
+        assertFalse(courier.recharge(o.waypoint("c4")), "it stands in the lobby");
+        assertTrue(courier.move(o.room("lobby"), o.waypoint("c4")));
+        assertFalse(courier.recharge(o.waypoint("c4")), "no dock at c4");
+        assertTrue(courier.move(o.waypoint("c4"), o.room("lobby")));
+        double drained = courier.battery();
+        assertTrue(drained < 100.0, "driving drains the battery: " + drained);
+
+        HospitalRun run = h.run(new Recharge(o.room("lobby")));
+        assertTrue(run.completed(), run.toString());
+        assertEquals(100.0, courier.battery(), 1e-6);
+        assertEquals(List.of("recharge(lobby)"), done(run), run.refArc().log().toString());
+    }
+
+    @Test
+    void aDeliveryIsPlannedShortestInMetres() {
+        HospitalSimulation h = new HospitalSimulation(1);
+        HospitalObjects o = h.objects();
+        HospitalRun run = h.run(new generated.hospital.tasks.Deliver(o.item("gauze"), o.room("ward1")));
+        assertTrue(run.completed(), run.toString());
+        // lobby - c4 - c1 - storage, then storage - c1 - c2 - c3 - ward1: 3.7 + 13.6 + 3.7 + 3.7 + 8 + 8 + 3.7 m
+        double metres = 0;
+        for (Status s : run.refArc().statuses()) {
+            if (s instanceof Status.ActionSucceeded done && done.action().action().equals("move")) {
+                metres += SimulatedBuilding.routeLength(h.floor(), done.action().args().get(0).toString(), done.action().args().get(1).toString());
+            }
+        }
+        assertEquals(44.4, metres, 0.5, done(run).toString());
+    }
+
+    /** The model actions the run executed, as {@code name(args)}. */
+    private static List<String> done(HospitalRun run) {
+        return run.refArc().statuses().stream().filter(Status.ActionSucceeded.class::isInstance)
+                .map(s -> ((Status.ActionSucceeded) s).action()).map(a -> a.action() + a.args().toString().replace('[', '(').replace(']', ')'))
+                .toList();
+    }
+
+    @Test
+    void theChargedGoalIsPddlThatMetricFfAndValRead() {
+        HospitalSimulation h = new HospitalSimulation(1);
+        org.triad.runtime.app.State state = new generated.hospital.HospitalStateProvider(h.courier(), h.building()).currentState();
+        org.triad.runtime.schema.ModelGoal charged = new org.triad.runtime.schema.ModelGoal(generated.hospital.HospitalSchema.SCHEMA, "Charged",
+                List.of(h.objects().room("lobby")));
+        String problem = new org.triad.runtime.schema.PddlTranslator(generated.hospital.HospitalSchema.SCHEMA)
+                .translate(state, charged.schema(), charged.binding()).problemText();
+        // battery() >= 100.0 over the values a battery can have: only doubles (an int constant is a type error for
+        // Metric-FF), and no case decided now left as an empty (and) or (or), which neither Metric-FF nor VAL reads
+        String goal = problem.substring(problem.indexOf("(:goal"));
+        assertTrue(goal.contains("(courier-battery dbl-100-0)"), goal);
+        assertFalse(goal.contains("int-") || goal.contains("(and)") || goal.contains("(or)"), goal);
+    }
+}
