@@ -23,6 +23,7 @@ import generated.hospital.tasks.Recharge;
  */
 class HospitalNumbersTest {
     private static final Path MODELS = Path.of("src", "main", "models");
+    private static final Pattern ADJ = Pattern.compile("Building\\.(?:adj|doorway)\\((?:\\w+, )?(\\w+), (\\w+)\\);");
     private static final Pattern DISTANCE = Pattern.compile("Building\\.distance\\((\\w+), (\\w+)\\) == ([0-9.]+);");
 
     @Test
@@ -31,6 +32,13 @@ class HospitalNumbersTest {
         for (String situation : List.of("Morning.state", "Evening.state", "Shortage.state")) {
             Matcher m = DISTANCE.matcher(Files.readString(MODELS.resolve(situation)));
             int edges = 0;
+            String text = Files.readString(MODELS.resolve(situation));
+            Matcher adj = ADJ.matcher(text);
+            while (adj.find()) {
+                // a move along an edge without a length would have no cost, and the planner could not take it
+                assertTrue(text.contains("Building.distance(" + adj.group(1) + ", " + adj.group(2) + ") =="),
+                        situation + ": no length for " + adj.group());
+            }
             while (m.find()) {
                 double metres = SimulatedBuilding.routeLength(floor, m.group(1), m.group(2));
                 assertEquals(metres, Double.parseDouble(m.group(3)), 0.1, situation + ": " + m.group());
