@@ -21,6 +21,12 @@ import org.triad.planner.pddl.Problem;
  * finite number (a division by zero or an overflow while searching makes the instance inapplicable in
  * that state, as an undefined value does in PDDL).
  * <p>
+ * <b>A* first.</b> When the metric only grows (action costs) or there is none, A* on an admissible bound
+ * ({@link NumericHeuristic#lowerBound}, looked up by the facts) runs first on a small budget, with
+ * states pruned by {@link NumericDominance}; a plan it finds is optimal and ends planning (a robot's
+ * route with a battery). When the numbers are resources only and the goal needs facts, weighted A* on
+ * h_add over the facts then looks for a cheap first plan; otherwise the greedy search starts.
+ * <p>
  * <b>The metric.</b> With a {@code :metric}, the first plan is then improved as LAMA and Metric-FF's
  * optimising mode do: weighted A* restarts (weights 5, 3, 2, 1) ordered by the metric so far plus a
  * cost-sensitive estimate ({@link NumericHeuristic#estimateCost}), keeping the best plan; when the metric
