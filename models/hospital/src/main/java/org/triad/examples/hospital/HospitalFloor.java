@@ -192,6 +192,16 @@ public final class HospitalFloor {
                 .map(ControlledDoor::door).findFirst();
     }
 
+    /** Whether {@code door} joins {@code a} and {@code b} (the world property {@code Building.doorway}, for every binding). */
+    public static boolean isDoorway(String door, String a, String b) {
+        return controlledDoor(a, b).map(door::equals).orElse(false);
+    }
+
+    /** Whether {@code waypoint} is a landing of {@code lift} (the world property {@code Building.landing}). */
+    public static boolean isLanding(String lift, String waypoint) {
+        return liftLandingAt(waypoint).map(l -> l.lift().equals(lift)).orElse(false);
+    }
+
     private void route(FloorPlan.Builder b, String... via) {
         List<String> path = List.of(via);
         for (int i = 1; i < path.size(); i++) {

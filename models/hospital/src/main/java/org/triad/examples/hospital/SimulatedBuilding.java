@@ -136,12 +136,12 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
 
     @Override
     public boolean doorway(Door d, WayPoint a, WayPoint b) {
-        return HospitalFloor.controlledDoor(a.name(), b.name()).map(d.name()::equals).orElse(false);
+        return HospitalFloor.isDoorway(d.name(), a.name(), b.name());
     }
 
     @Override
     public boolean landing(Lift l, WayPoint w) {
-        return HospitalFloor.liftLandingAt(w.name()).map(x -> x.lift().equals(l.name())).orElse(false);
+        return HospitalFloor.isLanding(l.name(), w.name());
     }
 
     /**

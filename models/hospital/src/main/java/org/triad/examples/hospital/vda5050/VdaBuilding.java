@@ -96,12 +96,12 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
 
     @Override
     public boolean doorway(Door d, WayPoint a, WayPoint b) {
-        return HospitalFloor.controlledDoor(a.name(), b.name()).map(d.name()::equals).orElse(false);
+        return HospitalFloor.isDoorway(d.name(), a.name(), b.name());
     }
 
     @Override
     public boolean landing(Lift l, WayPoint w) {
-        return HospitalFloor.liftLandingAt(w.name()).map(x -> x.lift().equals(l.name())).orElse(false);
+        return HospitalFloor.isLanding(l.name(), w.name());
     }
 
     /** The building opens the door, the AGV drives through, the building closes it behind (a door left open is reported). */
