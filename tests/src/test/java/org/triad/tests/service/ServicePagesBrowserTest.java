@@ -77,7 +77,7 @@ class ServicePagesBrowserTest {
     @Test
     void staffSubmitAndFollowATaskWhileTheOperatorWatchesTheRobotOnTheMap() throws Exception {
         browser.get(service.url() + "/#token=" + SUBMIT);
-        waitUpTo(20).until(d -> d.findElements(By.cssSelector("#task-select option")).size() == 7);
+        waitUpTo(20).until(d -> d.findElements(By.cssSelector("#task-select option")).size() == 8);
         new Select(browser.findElement(By.id("task-select"))).selectByValue("CollectAndDeliver");
         new Select(browser.findElement(By.id("arg-i"))).selectByValue("syringe");
         new Select(browser.findElement(By.id("arg-from"))).selectByValue("storage");
