@@ -896,6 +896,13 @@ public final class FleetService implements AutoCloseable {
         String stop = lane.stopReason().orElse(null);
         boolean stopAborts = lane.stopAborts();
         Instant now = clock.instant();
+        // the robot leaves dispatch before the task's end is written, so whoever reads the abort sees it out
+        String takenOut = null;
+        if (status instanceof Status.TaskAborted a && stop == null) {
+            synchronized (lock) {
+                takenOut = takeOutIfFailing(lane, taskId, a.reason());
+            }
+        }
         try {
             if (LEASE_LOST.equals(stop)) {
                 // the instance that took the lease over owns the task now and has queued it again: write nothing
@@ -916,6 +923,9 @@ public final class FleetService implements AutoCloseable {
                     String[] request = { "remote_operation", "remote operation requested: " + cause };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), cause,
                             new String[] { a.goal().describe(), cause }, now));
+                    if (takenOut != null) {
+                        store.insertEvent(taskId, "robot_out", lane.name(), "robot " + lane.name() + " " + takenOut, now);
+                    }
                 }
             } else {
                 durably(() -> store.insertEvent(taskId, event[0], lane.name(), event[1], now));
@@ -941,8 +951,6 @@ public final class FleetService implements AutoCloseable {
                         }
                         claimed.remove(taskId);
                         lane.completed();
-                    } else if (status instanceof Status.TaskAborted a && stop == null) {
-                        takeOutIfFailing(lane, taskId, a.reason(), now);
                     }
                     lane.finished(taskId);
                     lock.notifyAll();
@@ -960,20 +968,19 @@ public final class FleetService implements AutoCloseable {
         }
     }
 
-    /** Takes a robot on which {@link #ABORTS_IN_A_ROW} tasks in a row aborted out of dispatch, with the reason; call with the lock held. */
-    private void takeOutIfFailing(RobotLane lane, long taskId, String reason, Instant now) {
+    /**
+     * Counts the abort and takes a robot on which {@link #ABORTS_IN_A_ROW} tasks in a row aborted out of dispatch; returns
+     * why it was taken out, or null; call with the lock held.
+     */
+    private String takeOutIfFailing(RobotLane lane, long taskId, String reason) {
         int inARow = lane.aborted();
         if (inARow >= ABORTS_IN_A_ROW && lane.online()) {
             String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: " + reason
                     + "; put it back online when it is fixed";
             lane.takeOut(why);
-            try {
-                store.insertEvent(taskId, "robot_out", lane.name(), "robot " + lane.name() + " " + why, now);
-            } catch (ServiceError e) {
-                // the robot is out all the same; the operator page shows it from the robot's view
-                System.err.println("triad serve: " + e.getMessage());
-            }
+            return why;
         }
+        return null;
     }
 
     /** Ends a queued task without executing it, for {@code reason}; call with the lock held. */
