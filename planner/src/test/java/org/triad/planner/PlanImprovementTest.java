@@ -237,4 +237,23 @@ class PlanImprovementTest {
         assertTrue(improved.plan().length() <= plain.plan().length(), improved.plan().length() + " > " + plain.plan().length());
         assertTrue(PlanValidator.validate(d, p, improved.plan()).valid());
     }
+
+    /**
+     * A first plan of several goals the portfolio found gets its share per squared step besides twice
+     * its work, within half the cap (sokoban-sat11 p07: without the share its 119 steps got 0.35 s worth
+     * and ended at 101, 93 with it); a single goal's plan gets none, and a costly portfolio plan no more
+     * than half the cap.
+     */
+    @Test
+    void aPortfolioPlanOfSeveralGoalsGetsItsShareForItsLength() {
+        long cap = TriadEngine.IMPROVEMENT_CAP;
+        long first = 8_000_000;
+        long share = TriadEngine.IMPROVEMENT_WORK_PER_SQUARED_STEP * 119 * 119;
+        assertEquals(2 * first + share + TriadEngine.IMPROVEMENT_EXTRA_WORK, TriadEngine.improvementBudget(cap, first, 119, 5, false));
+        assertEquals(2 * first, TriadEngine.improvementBudget(cap, first, 119, 1, false));
+        assertEquals(cap / 2 + TriadEngine.IMPROVEMENT_EXTRA_WORK, TriadEngine.improvementBudget(cap, cap, 119, 5, false));
+        // the agenda's plans as before: the share besides half the cap, within twice the cap
+        assertEquals(2 * first + share + TriadEngine.IMPROVEMENT_EXTRA_WORK, TriadEngine.improvementBudget(cap, first, 119, 5, true));
+        assertEquals(2 * cap, TriadEngine.improvementBudget(cap, first, 1_000, 250, true));
+    }
 }
