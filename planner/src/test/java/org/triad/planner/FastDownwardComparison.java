@@ -23,7 +23,12 @@ import org.triad.planner.pddl.Problem;
  * the median length ratio over the problems both solved. With {@code --repeat N}, Triad runs N more
  * times idle and N times with a CPU load beside it (busy threads, twice the cores, in this JVM) and a
  * column gives the lengths of those runs ("all L" when every run gave L): the engine's budgets count
- * work, so they must all be the same. See planner/BENCHMARK.md.
+ * work, so they must all be the same. On a shared machine the idle runs are made as idle as the
+ * machine allows: their process runs at {@code nice -n -10} (ahead of every other process; where
+ * that is not permitted, {@code nice} says so and runs it at the usual priority), and the load
+ * average at the start of each idle and loaded run is summed up at the end. The Triad CPU column is the CPU seconds of its whole process
+ * (all threads, JIT and GC included), what wall seconds would be on an idle machine with one core
+ * free for it. See planner/BENCHMARK.md.
  */
 public final class FastDownwardComparison {
     public static void main(String[] args) throws Exception {
@@ -39,6 +44,8 @@ public final class FastDownwardComparison {
             System.exit(2);
         }
         List<Double> ratios = new ArrayList<>();
+        List<Double> timeRatios = new ArrayList<>();
+        List<Double> cpuRatios = new ArrayList<>();
         String fd = args[0];
         double timeout = Double.parseDouble(args[1]);
         Path root = Path.of(args[2]).toAbsolutePath();
@@ -47,9 +54,11 @@ public final class FastDownwardComparison {
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout);
         String repeatHeader = repeat > 0 ? " Triad lengths, " + repeat + " idle / " + repeat + " loaded |" : "";
-        System.out.println("| problem | Triad s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |" + repeatHeader);
-        System.out.println("|---|---|---|---|---|---|---|---|" + (repeat > 0 ? "---|" : ""));
+        System.out.println("| problem | Triad s | Triad CPU s | Triad length | Triad valid | FD s | FD length | FD valid | length ratio |" + repeatHeader);
+        System.out.println("|---|---|---|---|---|---|---|---|---|" + (repeat > 0 ? "---|" : ""));
         int varying = 0;
+        double[] idleLoad = {Double.MAX_VALUE, 0};
+        double[] loadedLoad = {Double.MAX_VALUE, 0};
         List<String> notes = new ArrayList<>();
         for (int i = 3; i < args.length; i++) {
             Path problemFile = root.resolve(args[i]);
@@ -66,6 +75,8 @@ public final class FastDownwardComparison {
             Path fdPlan = work.resolve("fd.plan");
             Files.deleteIfExists(triadPlan);
             Files.deleteIfExists(fdPlan);
+            Path triadCpu = work.resolve("triad.plan.cpu");
+            Files.deleteIfExists(triadCpu);
             String cp = String.join(java.io.File.pathSeparator, java.util.Arrays.stream(System.getProperty("java.class.path")
                     .split(java.io.File.pathSeparator)).map(e -> Path.of(e).toAbsolutePath().toString()).toList());
             double triadS = run(work, "triad.log", timeout, List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
@@ -90,18 +101,24 @@ public final class FastDownwardComparison {
             String[] f = check(domain, problem, fdPlan);
             String ratio = t[0].equals("-") || f[0].equals("-") ? "-" : String.format("%.2f", Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
             if (!ratio.equals("-")) ratios.add(Double.parseDouble(t[0]) / Double.parseDouble(f[0]));
+            String cpu = Files.exists(triadCpu) ? String.format("%.2f", Double.parseDouble(Files.readString(triadCpu).trim())) : "-";
             String repeated = "";
             if (repeat > 0) {
                 List<String> idle = new ArrayList<>();
                 List<String> loaded = new ArrayList<>();
                 List<String> solve = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m", "-cp", cp,
                         SolveOnce.class.getName(), domainFile.toString(), problemFile.toString(), triadPlan.toString(), Double.toString(timeout));
+                List<String> idleSolve = new ArrayList<>(List.of("nice", "-n", "-10"));
+                idleSolve.addAll(solve);
                 for (int k = 0; k < 2 * repeat; k++) {
                     boolean withLoad = k >= repeat;
                     Files.deleteIfExists(triadPlan);
                     CpuLoad load = withLoad ? new CpuLoad(2 * Runtime.getRuntime().availableProcessors()) : null;
+                    double loadAverage = ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
+                    (withLoad ? loadedLoad : idleLoad)[0] = Math.min((withLoad ? loadedLoad : idleLoad)[0], loadAverage);
+                    (withLoad ? loadedLoad : idleLoad)[1] = Math.max((withLoad ? loadedLoad : idleLoad)[1], loadAverage);
                     try {
-                        run(work, "triad-repeat.log", timeout, solve);
+                        run(work, "triad-repeat.log", timeout, withLoad ? solve : idleSolve);
                     } finally {
                         if (load != null) load.stop();
                     }
@@ -118,7 +135,9 @@ public final class FastDownwardComparison {
                 repeated = " " + (same && !lengths.isEmpty() ? "all " + lengths.get(0) + (capped > 0 ? " (" + capped + " of " + all.size() + " runs stopped at the cap)" : "")
                         : String.join(" ", idle) + " / " + String.join(" ", loaded)) + " |";
             }
-            System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s |%s%n", args[i], seconds(triadS, t), t[0], t[1], seconds(fdS, f), f[0], f[1], ratio,
+            if (!t[0].equals("-") && !f[0].equals("-")) timeRatios.add(triadS / fdS);
+            if (Files.exists(triadCpu) && !Double.isNaN(fdS) && !t[0].equals("-") && !f[0].equals("-")) cpuRatios.add(Double.parseDouble(cpu) / fdS);
+            System.out.printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |%s%n", args[i], seconds(triadS, t), cpu, t[0], t[1], seconds(fdS, f), f[0], f[1], ratio,
                     repeated);
             if (t[0].equals("-")) notes.add(args[i] + ": " + (Double.isNaN(triadS) ? "killed at the cap" : firstLine(work.resolve("triad.log"))));
         }
@@ -129,12 +148,25 @@ public final class FastDownwardComparison {
             long above = ratios.stream().filter(r -> r > 1.1 + 1e-9).count();
             System.out.printf("%nmedian length ratio %.2f over %d problems both solved; %d above 1.1%n", median, n, above);
         }
-        if (repeat > 0) System.out.printf("%nproblems whose %d repeated runs (idle and loaded) gave more than one length: %d%n", 2 * repeat, varying);
+        if (!timeRatios.isEmpty()) System.out.printf("median whole-process time ratio (Triad wall / FD wall) %.2f, (Triad CPU / FD wall) %.2f%n",
+                median(timeRatios), cpuRatios.isEmpty() ? Double.NaN : median(cpuRatios));
+        if (repeat > 0) {
+            System.out.printf("%nproblems whose %d repeated runs (idle and loaded) gave more than one length: %d%n", 2 * repeat, varying);
+            System.out.printf("idle runs at nice -10, load average %.1f-%.1f at their start; loaded runs beside %d busy threads, load average %.1f-%.1f%n",
+                    idleLoad[0], idleLoad[1], 2 * Runtime.getRuntime().availableProcessors(), loadedLoad[0], loadedLoad[1]);
+        }
         if (!notes.isEmpty()) {
             System.out.println();
             System.out.println("Triad without a plan:");
             for (String n : notes) System.out.println("- " + n);
         }
+    }
+
+    private static double median(List<Double> values) {
+        List<Double> v = new ArrayList<>(values);
+        java.util.Collections.sort(v);
+        int n = v.size();
+        return n % 2 == 1 ? v.get(n / 2) : (v.get(n / 2 - 1) + v.get(n / 2)) / 2;
     }
 
     /** Busy threads beside the measured process, so that it runs on a loaded machine. */
