@@ -1,6 +1,7 @@
 package org.triad.vda5050.master;
 
 import java.util.ArrayList;
+import java.util.Objects;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -271,7 +272,36 @@ public final class RemoteAgv implements FailureExplaining {
         if (route.size() < 2) {
             throw new IllegalArgumentException("a route has at least two nodes, got " + route);
         }
-        String call = (edgeActionType == null ? "drive " : edgeActionType + " ") + String.join(" -> ", route);
+        List<EdgeAction> each = new ArrayList<>();
+        for (int i = 1; i < route.size(); i++) {
+            each.add(edgeActionType == null ? null : new EdgeAction(edgeActionType, parameters));
+        }
+        return driveRoute(route, traffic, each);
+    }
+
+    /** An action done along one edge of a route (the ride of a lift between its landings, a guide, a door passed). */
+    public record EdgeAction(String actionType, Map<String, ?> parameters) {
+        public EdgeAction {
+            Objects.requireNonNull(actionType, "actionType");
+            parameters = Map.copyOf(parameters);
+        }
+    }
+
+    /**
+     * {@link #driveRoute(List, TrafficControl)} with its own action along each edge, or none (null): e.g. a route up
+     * through the lift, {@code c6 -> c7 -> d1 -> d2}, riding from landing {@code c7} to landing {@code d1}, reserved as
+     * the lift's cabin on the traffic map. The call succeeds once the robot arrived and every edge's action finished.
+     */
+    public boolean driveRoute(List<String> route, TrafficControl traffic, List<EdgeAction> edgeActionsPerEdge) {
+        if (route.size() < 2) {
+            throw new IllegalArgumentException("a route has at least two nodes, got " + route);
+        }
+        if (edgeActionsPerEdge.size() != route.size() - 1) {
+            throw new IllegalArgumentException("one edge action (or null) per edge of " + route + ", not " + edgeActionsPerEdge.size());
+        }
+        String call = (edgeActionsPerEdge.stream().allMatch(Objects::isNull) ? "drive "
+                : edgeActionsPerEdge.stream().filter(Objects::nonNull).map(EdgeAction::actionType).distinct().collect(java.util.stream.Collectors.joining("/")) + " ")
+                + String.join(" -> ", route);
         if (!ready(call)) {
             return false;
         }
@@ -286,8 +316,11 @@ public final class RemoteAgv implements FailureExplaining {
         }
         try {
             List<Action> edgeActions = new ArrayList<>();
-            for (int i = 1; edgeActionType != null && i < route.size(); i++) {
-                edgeActions.add(action(edgeActionType, parameters));
+            for (EdgeAction a : edgeActionsPerEdge) {
+                edgeActions.add(a == null ? null : action(a.actionType(), a.parameters()));
+            }
+            if (edgeActions.stream().allMatch(Objects::isNull)) {
+                edgeActions.clear();
             }
             return driveRouteUnder(route, traffic, call, edgeActions);
         } finally {

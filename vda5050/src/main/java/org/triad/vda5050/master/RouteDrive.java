@@ -44,13 +44,15 @@ final class RouteDrive {
     private final TrafficControl traffic;
     private final OrderSender orders;
     private final Consumer<String> stopNow;
-    /** The action done along every edge (e.g. guiding a person), one per edge, or empty. */
+    /** The action done along each edge (e.g. guiding a person, riding the lift), one per edge (null: none), or empty. */
     private final List<Action> edgeActions;
     private final List<Integer> stretchEnds = new ArrayList<>();
     private int updateId = -1;
     private int baseEnd;
     private int passed;
     private boolean waiting;
+    /** The AGV failed driving an edge (its error names one): it may stand between two nodes. */
+    private boolean strandedOnEdge;
 
     /**
      * @param stopNow sends the AGV an instant action that stops it at once (its argument the reason)
@@ -60,14 +62,15 @@ final class RouteDrive {
     }
 
     /**
-     * @param edgeActions one action per edge of the route (done while the robot drives it, e.g. guiding a person), or empty
+     * @param edgeActions one action per edge of the route (done while the robot drives it, e.g. guiding a person; null for
+     *                    none), or empty
      */
     RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow,
             List<Action> edgeActions) {
         if (!edgeActions.isEmpty() && edgeActions.size() != route.size() - 1) {
             throw new IllegalArgumentException("one edge action per edge of " + route + ", not " + edgeActions.size());
         }
-        this.edgeActions = List.copyOf(edgeActions);
+        this.edgeActions = java.util.Collections.unmodifiableList(new ArrayList<>(edgeActions));
         this.robot = robot;
         this.route = List.copyOf(route);
         this.orderId = orderId;
@@ -126,6 +129,7 @@ final class RouteDrive {
         }
         for (AgvError e : s.errors()) {
             if (orderId.equals(e.reference("orderId"))) {
+                strandedOnEdge = e.reference("edgeId") != null;
                 return new Verdict(false, e.describe());
             }
         }
@@ -148,13 +152,16 @@ final class RouteDrive {
             }
         }
         for (Action a : edgeActions) {
+            if (a == null) {
+                continue;
+            }
             Optional<ActionState> as = s.actionState(a.actionId());
             if (as.isPresent() && as.get().actionStatus() == ActionStatus.FAILED) {
-                traffic.stopAt(robot, route.get(passed));
+                traffic.stopAt(robot, route.get(Math.min(passed + 1, baseEnd))); // it may stand on the edge after the node it passed
                 return new Verdict(false, a.actionType() + " failed" + (as.get().resultDescription() == null ? "" : ": " + as.get().resultDescription()));
             }
         }
-        boolean actionsDone = edgeActions.stream()
+        boolean actionsDone = edgeActions.stream().filter(java.util.Objects::nonNull)
                 .allMatch(a -> s.actionState(a.actionId()).map(as -> as.actionStatus() == ActionStatus.FINISHED).orElse(false));
         if (passed == route.size() - 1 && s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving() && actionsDone) {
             return Verdict.DONE;
@@ -163,12 +170,16 @@ final class RouteDrive {
     }
 
     /**
-     * The call failed for another reason: after the AGV's error or silence its reservations end where it last
-     * reported a node; after its last will (not back within the grace) it is lost there, its base ahead freed.
+     * The call failed for another reason: after the AGV's error on an edge its reservations end at the node after the
+     * one it last reported (it may stand between them), after its silence at the one it reported; after its last will (not back within the grace) it is lost there, its base ahead freed.
      */
     void abandon(boolean connectionLost) {
         if (connectionLost) {
             traffic.lost(robot, "CONNECTIONBROKEN (its last will) and not back within the reconnect grace");
+        } else if (strandedOnEdge) {
+            // it stopped on the edge after the node it passed: it keeps that edge and the node ahead until it reports
+            // where it stands (backed off to the node behind it, or at the one ahead), so nobody is sent into it
+            traffic.stopAt(robot, route.get(Math.min(passed + 1, baseEnd)));
         } else {
             traffic.stopAt(robot, route.get(passed));
         }
@@ -221,7 +232,7 @@ final class RouteDrive {
             nodes.add(node(i));
             if (i + 1 < route.size()) {
                 edges.add(new Edge(route.get(i) + "-" + route.get(i + 1), 2 * i + 1, null, i + 1 <= baseEnd, route.get(i), route.get(i + 1),
-                        edgeActions.isEmpty() ? List.of() : List.of(edgeActions.get(i))));
+                        edgeActions.isEmpty() || edgeActions.get(i) == null ? List.of() : List.of(edgeActions.get(i))));
             }
         }
         orders.send(orderId, ++updateId, nodes, edges);

@@ -36,6 +36,7 @@ public final class TrafficControl {
     private final long origin = System.nanoTime();
     /** The doors tied to the door reservations, or null (reservations only). */
     private volatile DoorKeeper doors;
+    private long requests;
 
     /**
      * @param waitBoundSeconds how long a robot may wait for a resource before its action fails with the reason
@@ -156,7 +157,13 @@ public final class TrafficControl {
 
     synchronized Decision request(String robot, List<String> route) {
         mailbox.remove(robot);
+        requests++;
         return table.request(robot, route);
+    }
+
+    /** How many stretches robots asked for so far (each a reservation granted, queued or refused): a benchmark's denominator. */
+    public synchronized long requests() {
+        return requests;
     }
 
     synchronized boolean released(String robot, String node) {

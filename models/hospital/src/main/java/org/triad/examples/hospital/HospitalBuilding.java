@@ -23,7 +23,8 @@ import org.triad.sim.Vec2;
  * world. An item one courier picked up is gone for the others; couriers meet in the corridors and block each
  * other. Each courier has a {@link org.triad.sim.Battery} (the simulation's defaults: 50 J per metre driven, 360 kJ
  * full) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
- * along the walls of the lobby, then of ward 3, ward 2, storage, x-ray and ward 1 (20 spots a room).
+ * in one row along the walls of the lobby (19 spots, each with a clear way out: see {@link #LOBBY_SPOTS}), then in two
+ * columns along the walls of ward 3, ward 2, storage, x-ray and ward 1 (24 spots a room).
  *
  * <p>Script the building ({@code sim().at(40).closeDoor(...)}) before {@link #start(double)}; afterwards the clock
  * steps it and everything goes through {@link SimulationClock#call} or the couriers' blocking actions.
@@ -61,7 +62,7 @@ public final class HospitalBuilding {
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
         sim.addDock(DOCK, floor.plan().waypoint(DOCK).position());
         Whereabouts whereabouts = new Whereabouts(floor);
-        List<Vec2> spots = parkingSpots();
+        List<Vec2> spots = parkingSpots(floor);
         int spot = 0;
         for (int i = 0; i < names.size(); i++) {
             String name = names.get(i);
@@ -88,10 +89,25 @@ public final class HospitalBuilding {
         }
     }
 
-    /** Two columns along each side wall of the parking rooms, 0.8 m apart, clear of the doors in the middle. */
-    private List<Vec2> parkingSpots() {
-        List<Vec2> spots = new ArrayList<>();
-        for (String room : PARKING) {
+    /**
+     * The lobby's parking spots (m), one row along its walls: the straight way from each to the lobby's waypoint (where a
+     * courier leaving drives first, then out through the door) passes every other spot, Alice (at 5.6, 2.0) and the way
+     * from the waypoint out through the door at least 0.68 m off, centre to centre (two couriers of radius 0.3 m touch
+     * at 0.6), so a courier leaving never brushes one parked. Found by a randomized greedy search over the walls (0.4 m
+     * off them, 1.2 m or more from the waypoint); {@code HospitalBuildingParkingTest} checks the property.
+     */
+    static final List<Vec2> LOBBY_SPOTS = List.of(new Vec2(0.40, 1.85), new Vec2(0.40, 0.90), new Vec2(1.15, 0.40), new Vec2(2.30, 0.40),
+            new Vec2(3.20, 0.40), new Vec2(4.15, 0.40), new Vec2(4.90, 0.40), new Vec2(5.85, 0.40), new Vec2(7.60, 3.25), new Vec2(7.60, 4.15),
+            new Vec2(6.70, 4.60), new Vec2(5.55, 4.60), new Vec2(4.70, 4.60), new Vec2(3.20, 4.60), new Vec2(2.20, 4.60), new Vec2(0.95, 4.60),
+            new Vec2(0.40, 4.10), new Vec2(0.40, 3.35), new Vec2(0.40, 2.60));
+
+    /**
+     * The lobby's spots, then two columns along each side wall of the other parking rooms, 0.8 m apart, clear of the
+     * doors in the middle (a second column there stands in the first one's way out: only the lobby is laid out for it).
+     */
+    static List<Vec2> parkingSpots(HospitalFloor floor) {
+        List<Vec2> spots = new ArrayList<>(LOBBY_SPOTS);
+        for (String room : PARKING.subList(1, PARKING.size())) {
             Rect r = floor.plan().room(room).bounds();
             double[] xs = {r.minX() + 0.6, r.maxX() - 0.6, r.minX() + 1.4, r.maxX() - 1.4};
             for (double x : xs) {

@@ -178,6 +178,41 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
         return robot.carried().isEmpty();
     }
 
+    /**
+     * The robot stopped on the way along the model edge from {@code src} to {@code dst} (blocked, timed out): drives
+     * back the way it came to {@code src}, from the stretch of the edge's route it stands on, so that it stands on a
+     * node again and the next move can start there (under traffic control it still holds the edge until it reports
+     * {@code src}). False (logged) when the way back is blocked too; it then stands where it stopped.
+     */
+    public boolean backTo(WayPoint src, WayPoint dst) {
+        Optional<List<String>> route = floor.route(src.name(), dst.name());
+        if (route.isEmpty()) {
+            log.refused(sim.time(), "backTo(" + src + ")", "no corridor from " + src + " to " + dst);
+            return false;
+        }
+        List<String> r = route.get();
+        Vec2 p = robot.position();
+        int stretch = 0;
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int i = 0; i + 1 < r.size(); i++) {
+            double d = distanceToSegment(p, floor.plan().waypoint(r.get(i)).position(), floor.plan().waypoint(r.get(i + 1)).position());
+            if (d < nearest) {
+                nearest = d;
+                stretch = i;
+            }
+        }
+        List<String> back = new java.util.ArrayList<>(r.subList(0, stretch + 1));
+        java.util.Collections.reverse(back);
+        return arrived(robot.moveAlong(back), src);
+    }
+
+    private static double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+        Vec2 ab = b.minus(a);
+        double len = ab.dot(ab);
+        double t = len == 0 ? 0 : Math.max(0, Math.min(1, p.minus(a).dot(ab) / len));
+        return p.distance(new Vec2(a.x() + t * ab.x(), a.y() + t * ab.y()));
+    }
+
     @Override
     public boolean following(Person p) {
         return following.contains(p.name());

@@ -17,8 +17,10 @@ import org.triad.sim.Vec2;
  * The hospital's floor map as traffic control sees it, derived from {@link HospitalFloor}: a node per model
  * waypoint (corridor waypoints and rooms one robot, the lobby {@value #ROOM}, as the couriers start parked along
  * its walls), an edge per model edge (one lane), a door area (one robot) per door an edge passes
- * through, and a corridor area (one robot) per corridor that an edge's route runs through round corners
- * (the side corridors: nobody can pass a robot there, nor wait in it).
+ * through, a corridor area (one robot) per corridor that an edge's route runs through round corners
+ * (the side corridors: nobody can pass a robot there, nor wait in it), and the lift: an edge between its landings
+ * (c7 and d1, the ride, driven with the edge action {@code ride}) in a lift area over it, the cabins and the passages
+ * into them ({@value #LIFT_CAPACITY} robot), so that robots queue for the cabin in the order they asked.
  */
 public final class HospitalTraffic {
     /**
@@ -31,6 +33,8 @@ public final class HospitalTraffic {
      * courier ends its move on the room's waypoint, so a second one sent there is stopped by the first.
      */
     public static final int ROOM = 20;
+    /** Robots the lift's cabin carries at once (the simulated cabin is 3 m by 3 m, but a courier drives to its centre). */
+    public static final int LIFT_CAPACITY = 1;
 
     private HospitalTraffic() {
     }
@@ -62,6 +66,28 @@ public final class HospitalTraffic {
                 corridorRoundCorners(floor.plan(), route.get()).ifPresent(c -> corridors.computeIfAbsent(c, k -> new ArrayList<>()).add(edge));
             }
         }
+        // the ride: one edge between a lift's landings, driven as the AGV's edge action "ride"; it, the passages into and
+        // out of the cabins and the cabins are the lift, for LIFT_CAPACITY robots, so robots queue for it in order and
+        // nobody drives into a cabin another robot holds
+        Map<String, List<String>> lifts = new LinkedHashMap<>();
+        for (HospitalFloor.LiftLanding l : HospitalFloor.LIFT_LANDINGS) {
+            List<String> members = lifts.computeIfAbsent(l.lift(), k -> new ArrayList<>());
+            members.add(l.cabin());
+            String passage = b.edgeIds().contains(l.landing() + "-" + l.cabin()) ? l.landing() + "-" + l.cabin() : l.cabin() + "-" + l.landing();
+            members.add(passage);
+            doors.remove(l.door()); // the lift's doors open with the cabin: the lift area covers them
+        }
+        for (int i = 0; i < HospitalFloor.LIFT_LANDINGS.size(); i++) {
+            for (int j = i + 1; j < HospitalFloor.LIFT_LANDINGS.size(); j++) {
+                HospitalFloor.LiftLanding x = HospitalFloor.LIFT_LANDINGS.get(i);
+                HospitalFloor.LiftLanding y = HospitalFloor.LIFT_LANDINGS.get(j);
+                if (x.lift().equals(y.lift())) {
+                    b.edge(x.landing(), y.landing());
+                    lifts.get(x.lift()).add(x.landing() + "-" + y.landing());
+                }
+            }
+        }
+        lifts.forEach((lift, members) -> b.area(Kind.LIFT, lift, LIFT_CAPACITY, members.toArray(String[]::new)));
         doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
         corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
         return b.build();

@@ -427,9 +427,12 @@ public final class SimulatedAgv implements AutoCloseable {
                 error(typeAndWhy[0], typeAndWhy.length > 1 ? typeAndWhy[1] : why, List.of(new Reference("orderId", order),
                         new Reference("edgeId", e.edgeId())));
                 log.accept("agv " + serial + ": edge " + e.edgeId() + " of order " + order + " failed: " + why);
-                // stopped on the way (blocked, timed out): it is no longer at the edge's start node, and the courier
-                // refuses any move that does not start where it is; report that node, so the next plan starts there
-                lastNodeId = courier.robotActor().loc().name();
+                // stopped on the way by a robot or a person (blocked, timed out): a plain drive backs to the edge's start
+                // node, so that the AGV stands on a node of its order again (master control keeps the edge for it until it
+                // reports that node); otherwise (in front of a closed door, where it sees it open again; the lift; a guide;
+                // the way back blocked too) it reports the node it stands at, so the next plan starts there
+                boolean blocked = why.startsWith("PATH_BLOCKED") || why.startsWith("TIMEOUT");
+                lastNodeId = e.actions().isEmpty() && blocked && backOff(e) ? e.startNodeId() : courier.robotActor().loc().name();
                 abortOrder("edge " + e.edgeId() + " failed");
                 return;
             }
@@ -466,6 +469,14 @@ public final class SimulatedAgv implements AutoCloseable {
             log.accept("agv " + serial + ": carried by the lift from " + lastNodeId + " to " + at);
             lastNodeId = at;
         }
+    }
+
+    /** Drives back to the edge's start node after a failed drive along it (see {@code SimulatedCourier.backTo}). */
+    private boolean backOff(Edge e) {
+        boolean back = courier.robotActor().backTo(objects.waypoint(e.startNodeId()), objects.waypoint(e.endNodeId()));
+        log.accept("agv " + serial + ": " + (back ? "backed off to " + e.startNodeId() : "could not back off to " + e.startNodeId()
+                + " (" + courier.log().lastFailure().orElse("?") + "), stands at " + courier.robotActor().loc()));
+        return back;
     }
 
     private boolean traverse(Edge e) {

@@ -11,6 +11,7 @@ import org.triad.vda5050.devices.RemoteLift;
 import org.triad.examples.hospital.HospitalObjects;
 import org.triad.runtime.app.FailureExplaining;
 import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
 
 import generated.hospital.IWorld;
 import generated.hospital.domain.Door;
@@ -39,7 +40,16 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
     /** Why the last door or lift action failed on a device (not on the AGV); null after any other outcome. */
     private String deviceFailure;
 
+    /** The fleet's traffic control, or null: under it a ride is a reserved edge of the lift (see {@link #ride}). */
+    private final TrafficControl traffic;
+
     VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge, BuildingDevices devices) {
+        this(agv, floor, objects, knowledge, devices, null);
+    }
+
+    VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge, BuildingDevices devices,
+            TrafficControl traffic) {
+        this.traffic = traffic;
         this.agv = Objects.requireNonNull(agv, "agv");
         this.floor = Objects.requireNonNull(floor, "floor");
         this.objects = Objects.requireNonNull(objects, "objects");
@@ -141,6 +151,12 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
         Optional<HospitalFloor.LiftLanding> to = HospitalFloor.liftLandingAt(dst.name()).filter(x -> x.lift().equals(l.name()));
         if (from.isEmpty() || to.isEmpty() || from.get().floor() == to.get().floor()) {
             return deviceFailure(src.name() + " and " + dst.name() + " are not landings of lift '" + l.name() + "' on two floors");
+        }
+        if (traffic != null) {
+            // the lift is a resource of the traffic map (HospitalTraffic): the ride from landing to landing is reserved
+            // with the cabins, so robots queue for the cabin in the order they asked and it carries its capacity; the
+            // AGV rides as its edge action (this simulated building brings the cabin), released only once reserved
+            return agv.driveRoute(List.of(src.name(), dst.name()), traffic, "ride", java.util.Map.of("liftId", l.name()));
         }
         RemoteLift lift;
         try {

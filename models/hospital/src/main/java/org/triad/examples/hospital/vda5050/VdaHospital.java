@@ -70,7 +70,7 @@ public final class VdaHospital implements AutoCloseable {
         HospitalKnowledge knowledge = new HospitalKnowledge();
         devices = new BuildingDevices(master.broker(), serialNumber, doorSeconds, liftSeconds, System.err::println);
         courier = new VdaCourier(agv, objects, knowledge, traffic);
-        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge, devices);
+        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge, devices, traffic);
     }
 
     public HospitalObjects objects() {

@@ -1,0 +1,55 @@
+package org.triad.examples.hospital;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.triad.sim.Vec2;
+
+/** The lobby's parking spots give every parked courier a clear way out (issue #21: no contact in the lobby). */
+class HospitalBuildingParkingTest {
+    private static final double CLEARANCE = 0.68;
+
+    @Test
+    void everyParkedCourierHasAClearWayToTheLobbysWaypointAndOut() {
+        HospitalFloor floor = new HospitalFloor();
+        Vec2 waypoint = floor.plan().waypoint("lobby").position();
+        Vec2 c4 = floor.plan().waypoint("c4").position();
+        List<Vec2> spots = HospitalBuilding.LOBBY_SPOTS;
+        for (Vec2 s : spots) {
+            assertEquals("lobby", floor.waypointAt(s), s + " lies in the lobby");
+            assertTrue(distanceToSegment(s, waypoint, c4) >= CLEARANCE, s + " stands off the way out through the door");
+            assertTrue(distanceToSegment(HospitalFloor.PEOPLE.get("alice"), s, waypoint) >= CLEARANCE, "Alice stands off the way from " + s);
+            for (Vec2 other : spots) {
+                if (other != s) {
+                    assertTrue(distanceToSegment(other, s, waypoint) >= CLEARANCE, "the way from " + s + " passes " + other + " too close");
+                }
+            }
+        }
+    }
+
+    @Test
+    void twentyCouriersStartInTheLobbyTheFirstOnTheDockTheOthersOnItsSpots() {
+        List<String> names = new ArrayList<>();
+        for (int i = 1; i <= 20; i++) {
+            names.add("courier-" + i);
+        }
+        HospitalBuilding building = new HospitalBuilding(1, false, names);
+        for (int i = 0; i < names.size(); i++) {
+            Vec2 at = building.sim().robot(names.get(i)).position();
+            assertEquals("lobby", building.floor().waypointAt(at), names.get(i) + " starts in the lobby");
+            Vec2 expected = i == 0 ? building.floor().plan().waypoint("lobby").position() : HospitalBuilding.LOBBY_SPOTS.get(i - 1);
+            assertTrue(at.distance(expected) < 0.05, names.get(i) + " at " + at + ", not " + expected);
+        }
+        assertTrue(building.sim().contacts().isEmpty(), "nobody touches at the start: " + building.sim().contacts());
+    }
+
+    private static double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+        Vec2 ab = b.minus(a);
+        double t = Math.max(0, Math.min(1, p.minus(a).dot(ab) / ab.dot(ab)));
+        return p.distance(new Vec2(a.x() + t * ab.x(), a.y() + t * ab.y()));
+    }
+}
