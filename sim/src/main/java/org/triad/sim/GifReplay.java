@@ -166,8 +166,14 @@ public final class GifReplay {
                 last = (e.success() ? "" : "FAIL ") + e.action();
             }
         }
-        String caption = String.format(Locale.ROOT, "t=%6.1fs  %s", f.time(), last);
-        p.text(g, caption.length() > 90 ? caption.substring(0, 87) + "..." : caption, 4, p.height + 12);
+        // the battery first, so that a long action does not push it out of the caption
+        int gauge = f.robotBattery().length == 1 ? 34 : 0;
+        if (gauge > 0) {
+            BatteryGauge.draw(g, 4, p.height + 4, 30, 9, f.robotBattery()[0]);
+        }
+        g.setColor(PlanPainter.TEXT);
+        String caption = String.format(Locale.ROOT, "t=%6.1fs  %s  %s", f.time(), BatteryGauge.label(trace.robotNames(), f.robotBattery()), last);
+        p.text(g, caption.length() > 90 ? caption.substring(0, 87) + "..." : caption, 4 + gauge, p.height + 12);
         g.dispose();
         return img;
     }

@@ -10,7 +10,8 @@ import java.util.Locale;
 
 /**
  * A self-contained HTML page (inline data and JavaScript, no external resources) replaying a trace on a
- * canvas with play/pause, a time slider and a speed selector.
+ * canvas with play/pause, a time slider and a speed selector; each robot's battery is a gauge beside it and a figure
+ * beside the time, at every frame.
  */
 public final class HtmlReplay {
 
@@ -98,6 +99,10 @@ public final class HtmlReplay {
             for (int k = 0; k < f.doorOpen().length; k++) {
                 b.append(k > 0 ? "," : "").append(f.doorOpen()[k] ? 1 : 0);
             }
+            b.append("],[");
+            for (int k = 0; k < f.robotBattery().length; k++) {
+                b.append(k > 0 ? "," : "").append(String.format(Locale.ROOT, "%.1f", f.robotBattery()[k]));
+            }
             b.append("]]");
         }
         return b.append("]}").toString();
@@ -170,9 +175,14 @@ public final class HtmlReplay {
              for(let i=0;i<f[2].length;i+=2)if(f[2][i]!==null){disc(f[2][i],f[2][i+1],D.people[i/2][1],'#f08c14');
               g.fillStyle='#333';g.fillText(D.people[i/2][0],X(f[2][i])+6,Y(f[2][i+1])-6);}
              D.robots.forEach((r,k)=>{if(f[1].length>3*k){const x=f[1][3*k],y=f[1][3*k+1],h=f[1][3*k+2];disc(x,y,r[1],'#1e50c8');
-              g.strokeStyle='#fff';g.lineWidth=2;line(x,y,x+Math.cos(h)*r[1],y+Math.sin(h)*r[1]);}});
+              g.strokeStyle='#fff';g.lineWidth=2;line(x,y,x+Math.cos(h)*r[1],y+Math.sin(h)*r[1]);
+              if(f[5].length>k){const b=f[5][k],gx=X(x)+r[1]*S+4,gy=Y(y)-4;g.fillStyle='#fff';g.fillRect(gx,gy,30,8);
+               g.fillStyle=b<20?'#d22828':'#3caa3c';g.fillRect(gx,gy,30*Math.max(0,Math.min(100,b))/100,8);
+               g.strokeStyle='#141414';g.lineWidth=1;g.strokeRect(gx,gy,30,8);g.fillStyle='#141414';
+               g.fillText(Math.round(b)+' %',gx+33,gy+8);}}});
              for(const e of D.events)if(e[0]<=f[0]){disc(e[3],e[4],0.12,e[5]?'#008c3c':'#d21e1e');}
-             document.getElementById('time').textContent='t = '+f[0].toFixed(1)+' s';slider.value=idx;
+             document.getElementById('time').textContent='t = '+f[0].toFixed(1)+' s, '+(D.robots.length==1?(f[5].length?'battery '+f[5][0].toFixed(1)+' %':''):
+              D.robots.map((r,k)=>f[5].length>k?r[0]+' '+f[5][k].toFixed(1)+' %':'').filter(x=>x).join(', '));slider.value=idx;
              document.getElementById('log').textContent=D.events.filter(e=>e[0]<=f[0]).map(e=>
               e[0].toFixed(2).padStart(8)+'s '+e[1].padEnd(8)+(e[5]?' ok   ':' FAIL ')+e[2]+(e[5]||!e[6]?'':' - '+e[6])).join('\\n');}
             function tick(ts){if(last!==null&&playing){acc+=(ts-last)/1000*parseFloat(document.getElementById('speed').value);

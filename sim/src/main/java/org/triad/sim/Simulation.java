@@ -730,11 +730,13 @@ public final class Simulation {
         double[] rx = new double[nr];
         double[] ry = new double[nr];
         double[] rh = new double[nr];
+        double[] rb = new double[nr];
         for (int i = 0; i < nr; i++) {
             Vec2 p = robots.get(i).position();
             rx[i] = p.x();
             ry[i] = p.y();
             rh[i] = robots.get(i).heading();
+            rb[i] = robots.get(i).battery().percent();
         }
         int np = people.size();
         double[] px = new double[np];
@@ -759,7 +761,7 @@ public final class Simulation {
         for (Door d : doors.values()) {
             open[k++] = d.isOpen();
         }
-        trace.add(new TraceFrame(time(), rx, ry, rh, px, py, ix, iy, open));
+        trace.add(new TraceFrame(time(), rx, ry, rh, px, py, ix, iy, open, rb));
     }
 
     @Override

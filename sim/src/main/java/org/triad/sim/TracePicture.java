@@ -19,7 +19,8 @@ import javax.imageio.ImageIO;
 /**
  * A PNG of the floor plan with the waypoint graph, each robot's trajectory, people's paths, final
  * positions of people and items, and a numbered marker where each action ended (green success, red
- * failure), explained in a legend under the map. Door colours show the final state (red closed).
+ * failure), explained in a legend under the map with the acting robot's battery when the action ended. Door colours
+ * show the final state (red closed); a gauge beside each robot shows its final battery.
  */
 public final class TracePicture {
     private static final int MAX_LEGEND_LINES = 40;
@@ -98,6 +99,12 @@ public final class TracePicture {
         for (int i = 0; i < last.robotX().length; i++) {
             g.setColor(PlanPainter.ROBOT);
             p.disc(g, new Vec2(last.robotX()[i], last.robotY()[i]), sim.robots().get(i).radius());
+            double right = p.px(last.robotX()[i]) + sim.robots().get(i).radius() * p.scale + 4;
+            double top = p.py(last.robotY()[i]) - 4;
+            BatteryGauge.draw(g, right, top, 30, 8, last.robotBattery()[i]);
+            g.setColor(PlanPainter.TEXT);
+            p.font(g, 10);
+            p.text(g, String.format(Locale.ROOT, "%.0f %%", last.robotBattery()[i]), right + 33, top + 8);
         }
         p.font(g, 11);
         for (int i = 0; i < events.size(); i++) {
@@ -116,8 +123,10 @@ public final class TracePicture {
         }
         for (int i = 0; i < events.size(); i++) {
             TraceEvent e = events.get(i);
-            String line = String.format(Locale.ROOT, "%2d  t=%7.2fs  %-8s %s %s%s", i + 1, e.time(), e.actor(),
-                    e.success() ? "ok  " : "FAIL", e.action(), e.success() || e.detail().isEmpty() ? "" : " - " + e.detail());
+            double battery = BatteryGauge.at(trace, trace.robotNames().indexOf(e.actor()), e.time());
+            String line = String.format(Locale.ROOT, "%2d  t=%7.2fs  %-8s %s %s%s%s", i + 1, e.time(), e.actor(),
+                    e.success() ? "ok  " : "FAIL", Double.isNaN(battery) ? "" : String.format(Locale.ROOT, "[%5.1f %%] ", battery),
+                    e.action(), e.success() || e.detail().isEmpty() ? "" : " - " + e.detail());
             p.text(g, line.length() > 140 ? line.substring(0, 137) + "..." : line, 10, y + lineHeight * (i + 1));
         }
         g.dispose();

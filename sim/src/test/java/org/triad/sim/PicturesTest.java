@@ -27,6 +27,7 @@ class PicturesTest {
     static void deliverWithADetour() {
         sim = Scenes.sim(5);
         Robot robot = sim.addRobot("robot", "corridorWest", RobotSpec.defaults());
+        robot.setBattery(new Battery(360_000, 50, 500, 0.5)); // half full: the gauges are half green, half white
         sim.addPerson("nurse", "room5", PersonSpec.defaults()).wander();
         sim.closeDoor("room1-room2");
         robot.moveTo("storage");
@@ -96,6 +97,51 @@ class PicturesTest {
         assertEquals((sim.trace().frames().size() + stride - 1) / stride, frames, "one frame per 0.1 s");
         assertEquals(html.chars().filter(c -> c == '[').count(), html.chars().filter(c -> c == ']').count(),
                 "balanced data");
+    }
+
+    @Test
+    void everyPictureShowsTheBattery() throws IOException {
+        Robot robot = sim.robots().get(0);
+        double end = robot.battery().percent();
+        assertTrue(end < 50 && end > 45, "it drove from half full: " + end);
+        // HTML: the charge at every frame, beside the time and as a gauge
+        String html = Files.readString(writeHtml());
+        java.util.List<Double> levels = java.util.regex.Pattern.compile(",\\[(\\d+\\.\\d)\\]\\]").matcher(html).results()
+                .map(m -> Double.parseDouble(m.group(1))).toList();
+        long frames = java.util.regex.Pattern.compile("\\[\\d+\\.\\d{3},\\[").matcher(html).results().count();
+        assertEquals(frames, levels.size(), "one battery level per frame");
+        assertEquals(50.0, levels.get(0), 0.1);
+        assertEquals(end, levels.get(levels.size() - 1), 0.1);
+        for (int i = 1; i < levels.size(); i++) {
+            assertTrue(levels.get(i) <= levels.get(i - 1), "driving only draws it down: " + levels);
+        }
+        assertTrue(html.contains("'battery '+f[5][0].toFixed(1)"), "the figure beside the time");
+        // PNG: a gauge beside the robot where it ends, filled to its charge; the legend gives it per action
+        BufferedImage png = TracePicture.render(sim, 30);
+        PlanPainter p = new PlanPainter(sim.plan(), 30, 20);
+        double right = p.px(robot.position().x()) + robot.radius() * p.scale + 4;
+        double top = p.py(robot.position().y()) - 4;
+        assertEquals(PlanPainter.DOOR_OPEN.getRGB(), png.getRGB((int) right + 3, (int) top + 4), "the charged part");
+        assertEquals(java.awt.Color.WHITE.getRGB(), png.getRGB((int) right + 27, (int) top + 4), "the spent part");
+        // GIF: the gauge in the caption of every frame
+        Path gif = OUT.resolve("battery.gif");
+        GifReplay.write(sim, gif, 0.5, 120, 12, 40);
+        ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
+        try (ImageInputStream in = ImageIO.createImageInputStream(gif.toFile())) {
+            reader.setInput(in);
+            BufferedImage last = reader.read(reader.getNumImages(true) - 1);
+            PlanPainter q = new PlanPainter(sim.plan(), 12, 8);
+            assertEquals(PlanPainter.DOOR_OPEN.getRGB() & 0xffffff, last.getRGB(7, q.height + 8) & 0xffffff, "the charged part");
+            assertEquals(0xffffff, last.getRGB(31, q.height + 8) & 0xffffff, "the spent part");
+        } finally {
+            reader.dispose();
+        }
+    }
+
+    private static Path writeHtml() {
+        Path file = OUT.resolve("battery.html");
+        HtmlReplay.write(sim, file);
+        return file;
     }
 
     @Test
