@@ -336,11 +336,20 @@ public final class RemoteAgv implements FailureExplaining {
     private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions) {
         awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
         boolean idle;
+        String at;
         synchronized (lock) {
             idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
+            at = state == null ? null : state.lastNodeId();
         }
-        // an idle AGV asked to start at a node of its base short of its decision point (its last drive failed and it
-        // stopped before): its base ends there, so it can start again instead of every later drive being refused
+        if (idle && at != null && !at.equals(route.get(0))) {
+            // the route was planned from where the AGV stood before its last order ended elsewhere (cut short, it drove
+            // on to its decision point): the map is not moved to a node the AGV is not at
+            synchronized (lock) {
+                return fail(call + " on AGV " + name() + " refused: the AGV stands at '" + at + "', not at the route's start '" + route.get(0) + "'");
+            }
+        }
+        // an idle AGV at a node of its base short of its decision point (its last drive failed and it stopped before):
+        // its base ends there, so it can start again instead of every later drive being refused
         boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
         if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
