@@ -62,7 +62,7 @@ public final class BuildingTrafficBenchmark {
     private static final double STANDSTILL = 60;
 
     private record Row(int robots, boolean reserved, int contacts, int standstills, double longestStill, double simHours, long tasks, long failed,
-            List<Double> doorWaits, List<Double> liftWaits, List<Double> laneWaits, double cpuSeconds, long routes, long reservations) {
+            List<Double> doorWaits, List<Double> liftWaits, List<Double> laneWaits, double cpuSeconds, long routes, long reservations, long asides) {
     }
 
     public static void main(String[] args) throws Exception {
@@ -90,14 +90,14 @@ public final class BuildingTrafficBenchmark {
         }
         System.out.printf(Locale.ROOT, "%n%.0f simulated minutes per run at %.0fx real time, seed %d, both floors of the dyn4j hospital%n", minutes,
                 speed, seed);
-        System.out.println("| robots | reservations | contacts | standstills | longest still s | tasks/sim-h | failed drives | door waits med/p95/max s (n) | lift waits med/p95/max s (n) | corridor+lane waits med/p95/max s (n) | master CPU ms per robot per sim-min | master CPU ms per route | master CPU ms per reservation |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+        System.out.println("| robots | reservations | contacts | standstills | longest still s | tasks/sim-h | failed drives | steps aside | door waits med/p95/max s (n) | lift waits med/p95/max s (n) | corridor+lane waits med/p95/max s (n) | master CPU ms per robot per sim-min | master CPU ms per route | master CPU ms per reservation |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         rows.forEach(r -> System.out.println(format(r)));
     }
 
     private static String format(Row r) {
-        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.0f | %.1f | %d | %s | %s | %s | %.1f | %.2f | %s |", r.robots, r.reserved ? "yes" : "no",
-                r.contacts, r.standstills, r.longestStill, r.tasks / r.simHours, r.failed, waits(r.doorWaits, r.reserved), waits(r.liftWaits, r.reserved),
+        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.0f | %.1f | %d | %s | %s | %s | %s | %.1f | %.2f | %s |", r.robots, r.reserved ? "yes" : "no",
+                r.contacts, r.standstills, r.longestStill, r.tasks / r.simHours, r.failed, r.reserved ? Long.toString(r.asides) : "-", waits(r.doorWaits, r.reserved), waits(r.liftWaits, r.reserved),
                 waits(r.laneWaits, r.reserved), r.cpuSeconds * 1000 / r.robots / (r.simHours * 60), r.routes == 0 ? 0 : r.cpuSeconds * 1000 / r.routes,
                 r.reservations == 0 ? "-" : String.format(Locale.ROOT, "%.2f", r.cpuSeconds * 1000 / r.reservations));
     }
@@ -125,7 +125,7 @@ public final class BuildingTrafficBenchmark {
             // the table runs on the wall clock: a courier may wait 120 simulated seconds at the building's pace
             TrafficControl traffic = new TrafficControl(map, 120 / speed, log::add);
             if (reserved) {
-                traffic.keepDoors(keeper);
+                traffic.keepDoors(keeper).stepAside(true);
             }
             List<RemoteAgv> agvs = new ArrayList<>();
             for (int i = 1; i <= n; i++) {
@@ -240,7 +240,7 @@ public final class BuildingTrafficBenchmark {
                 return null;
             });
             return new Row(n, reserved, contacts, standstills, longestStill, simSeconds / 3600, tasks.get(), failed.get(), doorWaits, liftWaits, laneWaits,
-                    cpu, routes.get(), reserved ? traffic.requests() : 0);
+                    cpu, routes.get(), reserved ? traffic.requests() : 0, new ArrayList<>(log).stream().filter(l -> l.contains(" steps aside ")).count());
         }
     }
 
