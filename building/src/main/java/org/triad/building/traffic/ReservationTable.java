@@ -26,7 +26,8 @@ import org.triad.building.traffic.Decision.Waiting;
  * <p>A robot holds what it stands on ({@link TrafficMap#standing}) and its <em>base</em>: the route it is
  * allowed to drive, from the node it last passed to its <em>decision point</em>. It asks for its route one
  * <em>stretch</em> at a time: from its decision point to the next stop node (or the route's end; through a
- * hall for several robots that it would fill, to the stop node after it), all resources of the stretch at
+ * hall for several robots that it would fill, to the stop node after it; into a dead-end room that is taken,
+ * instead of waiting at its door), all resources of the stretch at
  * once or none. A request is granted when every resource it needs has room for it after the robots queued
  * earlier for that resource; otherwise it queues in arrival order, unless queuing would close a cycle of
  * robots waiting for each other: then it is put ahead of the robots that wait for it, if that keeps the
@@ -178,6 +179,9 @@ public final class ReservationTable {
         if (end < route.size() - 1 && !keepsRoomToPass(route.get(end), robot)) {
             end = nextStop(route, end); // don't fill the hall: through it to the next stop node, all or nothing
         }
+        if (end < route.size() - 1 && deadEndTaken(route.get(end), route.get(end + 1), robot)) {
+            end = nextStop(route, end); // don't wait at the door of a taken dead end: into it, all or nothing
+        }
         List<String> stretch = List.copyOf(route.subList(0, end + 1));
         Set<Resource> needed = new LinkedHashSet<>();
         for (int i = 0; i + 1 < stretch.size(); i++) {
@@ -246,6 +250,30 @@ public final class ReservationTable {
             }
         }
         return taken + 2 <= r.capacity();
+    }
+
+    /**
+     * Whether {@code node} is a dead end entered from {@code mouth} only (a room off a corridor) that has no room for
+     * the robot now: held by others, or promised to robots queued for it. A robot waiting at its mouth would shut in
+     * the robot inside, whose only way out that is.
+     */
+    public boolean deadEndTaken(String mouth, String node, String robot) {
+        if (!map.neighbours(node).equals(Set.of(mouth))) {
+            return false;
+        }
+        Resource r = map.node(node);
+        int taken = 0;
+        for (String h : holders(r)) {
+            if (!h.equals(robot)) {
+                taken++;
+            }
+        }
+        for (Request w : queue.values()) {
+            if (w.needed.contains(r) && !w.robot.equals(robot)) {
+                taken++;
+            }
+        }
+        return taken + 1 > r.capacity();
     }
 
     /** Whether {@code node} lies on the robot's base (behind or at its decision point): where it may drive. */

@@ -85,6 +85,37 @@ class ReservationTableTest {
     }
 
     @Test
+    void aRobotDoesNotWaitAtTheDoorOfATakenDeadEndItReservesTheDoorAndTheRoomTogether() {
+        // w - m - e, and a room off m (a dead end: its only way out is m)
+        TrafficMap map = TrafficMap.builder().node("w").node("m").node("e").node("room").edge("w", "m").edge("m", "e").edge("m", "room").build();
+        ReservationTable t = table(map);
+        t.place("r1", "room");
+        t.place("r2", "w");
+        assertTrue(t.deadEndTaken("m", "room", "r2"));
+        assertFalse(t.deadEndTaken("m", "room", "r1"), "its own room");
+        assertFalse(t.deadEndTaken("w", "m", "r2"), "m is no dead end");
+        Waiting w2 = assertInstanceOf(Waiting.class, t.request("r2", route("w", "m", "room")));
+        assertEquals(route("w", "m", "room"), w2.queued().stretch(), "the door m and the room at once, not m first");
+        assertFalse(t.released("r2", "m"), "r2 waits at w: m stays free for r1 to come out");
+        // r1 comes out: r2 was queued first for m, but waits for r1, so r1 goes first (rule 3) instead of being refused
+        Granted out = assertInstanceOf(Granted.class, t.request("r1", route("room", "m", "e")));
+        assertEquals(route("room", "m"), out.stretch());
+        driveBase(t, "r1");
+        assertInstanceOf(Granted.class, t.request("r1", route("m", "e")));
+        Changes c = driveBase(t, "r1");
+        assertEquals(List.of("r2"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(route("w", "m", "room"), t.base("r2"));
+        // with the room free, a robot stops at its door as before
+        driveBase(t, "r2");
+        assertInstanceOf(Granted.class, t.request("r2", route("room", "m", "w")));
+        driveBase(t, "r2");
+        assertInstanceOf(Granted.class, t.request("r2", route("m", "w")));
+        driveBase(t, "r2");
+        Granted g1 = assertInstanceOf(Granted.class, t.request("r1", route("e", "m", "room")));
+        assertEquals(route("e", "m"), g1.stretch());
+    }
+
+    @Test
     void headToHeadBetweenNodesForOneRobotIsRefusedAsADeadlockAndResolvedByYieldingToASideNode() {
         ReservationTable t = table(Maps.singleLane(1));
         t.place("r1", "hall-w");

@@ -334,19 +334,52 @@ public final class RemoteAgv implements FailureExplaining {
     }
 
     private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions) {
+        return driveRouteUnder(route, traffic, call, edgeActions, traffic.stepsAside());
+    }
+
+    /** @param mayStepAside whether the robot makes way by itself (not while it is stepping aside already) */
+    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions, boolean mayStepAside) {
         awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
         boolean idle;
+        String at;
         synchronized (lock) {
             idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
+            at = state == null ? null : state.lastNodeId();
         }
-        // an idle AGV asked to start at a node of its base short of its decision point (its last drive failed and it
-        // stopped before): its base ends there, so it can start again instead of every later drive being refused
+        if (idle && at != null && !at.equals(route.get(0))) {
+            // the route was planned from where the AGV stood before its last order ended elsewhere (cut short, it drove
+            // on to its decision point): the map is not moved to a node the AGV is not at
+            synchronized (lock) {
+                return fail(call + " on AGV " + name() + " refused: the AGV stands at '" + at + "', not at the route's start '" + route.get(0) + "'");
+            }
+        }
+        // an idle AGV at a node of its base short of its decision point (its last drive failed and it stopped before):
+        // its base ends there, so it can start again instead of every later drive being refused
         boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
         if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
                 return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
                         + (traffic.read(t -> t.robots().contains(name())) ? traffic.decisionPoint(name()) : "?")
                         + "' on the traffic map, or its node has no room");
+            }
+        }
+        if (mayStepAside && traffic.deadEndTaken(name(), route.get(0), route.get(1))) {
+            // sent into a dead-end room another robot holds: waiting at its door would shut that robot in (its only way
+            // out), so wait beside it instead, for the door and the room together (the table's dead-end rule)
+            Optional<String> side = traffic.aside(name());
+            if (side.isPresent()) {
+                traffic.note("traffic: " + name() + " steps aside from " + route.get(0) + " to " + side.get() + ": " + route.get(1)
+                        + " is a dead end that another robot holds, and " + route.get(0) + " its only way out");
+                if (!driveRouteUnder(List.of(route.get(0), side.get()), traffic, "step aside " + route.get(0) + " -> " + side.get(), List.of(), false)) {
+                    return false;
+                }
+                List<String> back = new ArrayList<>(route);
+                back.add(0, side.get());
+                List<Action> actions = new ArrayList<>(edgeActions);
+                if (!actions.isEmpty()) {
+                    actions.add(0, null);
+                }
+                return driveRouteUnder(back, traffic, call, actions, false);
             }
         }
         long sent = System.nanoTime();
@@ -360,8 +393,12 @@ public final class RemoteAgv implements FailureExplaining {
         if (refused.isPresent()) {
             traffic.stopAt(name(), route.get(0));
             synchronized (lock) {
-                return fail(call + " on AGV " + name() + " refused by traffic control: " + refused.get());
+                fail(call + " on AGV " + name() + " refused by traffic control: " + refused.get());
             }
+            if (mayStepAside) {
+                stepAsideAfter(drive, traffic);
+            }
+            return false;
         }
         boolean ok = awaitOutcome(call, sent, s -> {
             RouteDrive.Verdict v;
@@ -382,8 +419,37 @@ public final class RemoteAgv implements FailureExplaining {
             synchronized (lock) {
                 abandonedOrder = drive.orderId(); // it may still drive to its decision point: the next order waits for that
             }
+            if (mayStepAside && !down) {
+                stepAsideAfter(drive, traffic);
+            }
         }
         return ok;
+    }
+
+    /**
+     * Refused as a deadlock (the robot would have waited for robots that wait for it): out of their way to a free
+     * neighbouring stop node, once it stands at its decision point, so that they can pass; the call's failure says where
+     * it went, and its caller re-plans from there.
+     */
+    private void stepAsideAfter(RouteDrive drive, TrafficControl traffic) {
+        if (drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
+            return;
+        }
+        String why;
+        synchronized (lock) {
+            why = lastFailure;
+        }
+        awaitAbandonedOrderEnded();
+        String from = traffic.decisionPoint(name());
+        Optional<String> side = traffic.aside(name());
+        if (side.isEmpty()) {
+            return;
+        }
+        traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of " + drive.refusal().get().cycle());
+        boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false);
+        synchronized (lock) {
+            lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure);
+        }
     }
 
     private boolean runOrder(String orderId, List<Node> nodes, List<Edge> edges, List<Action> actions, String call) {

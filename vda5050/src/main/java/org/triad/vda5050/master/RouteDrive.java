@@ -53,6 +53,10 @@ final class RouteDrive {
     private boolean waiting;
     /** The AGV failed driving an edge (its error names one): it may stand between two nodes. */
     private boolean strandedOnEdge;
+    /** The drive ended at its decision point (refused, a wait over the bound, a door shut): the AGV drives on to it. */
+    private boolean endedHere;
+    /** Traffic control's refusal that ended the drive, if one did. */
+    private Refused refusal;
 
     /**
      * @param stopNow sends the AGV an instant action that stops it at once (its argument the reason)
@@ -83,10 +87,16 @@ final class RouteDrive {
         return orderId;
     }
 
+    /** The refusal that ended the drive (e.g. a deadlock avoided, naming the robots of the cycle), if one did. */
+    Optional<Refused> refusal() {
+        return Optional.ofNullable(refusal);
+    }
+
     /** Asks for the first stretches and sends the order (its base possibly just the start node); a reason when refused. */
     Optional<String> start() {
         Decision d = traffic.request(robot, route);
         if (d instanceof Refused r) {
+            refusal = r;
             return Optional.of(r.reason());
         }
         if (d instanceof Granted g) {
@@ -112,6 +122,7 @@ final class RouteDrive {
         if (d.isPresent() && waiting) {
             waiting = false;
             if (d.get() instanceof Refused r) {
+                refusal = r;
                 return endHere(r.reason());
             }
             Optional<String> shut = extend((Granted) d.get());
@@ -170,12 +181,16 @@ final class RouteDrive {
     }
 
     /**
-     * The call failed for another reason: after the AGV's error on an edge its reservations end at the node after the
+     * The call failed: ended at its decision point (see {@link #endHere}), the AGV keeps its base up to there; after the AGV's error on an edge its reservations end at the node after the
      * one it last reported (it may stand between them), after its silence at the one it reported; after its last will (not back within the grace) it is lost there, its base ahead freed.
      */
     void abandon(boolean connectionLost) {
         if (connectionLost) {
             traffic.lost(robot, "CONNECTIONBROKEN (its last will) and not back within the reconnect grace");
+        } else if (endedHere) {
+            // its order ends at the decision point, which it still drives to: its base stays reserved up to there (cut
+            // back to the node it last reported, the AGV would drive on through places given to others)
+            return;
         } else if (strandedOnEdge) {
             // it stopped on the edge after the node it passed: it keeps that edge and the node ahead until it reports
             // where it stands (backed off to the node behind it, or at the one ahead), so nobody is sent into it
@@ -190,6 +205,7 @@ final class RouteDrive {
         while (!waiting && baseEnd < route.size() - 1 && stretchEnds.stream().filter(e -> e > passed).count() <= 1) {
             Decision d = traffic.request(robot, route.subList(baseEnd, route.size()));
             if (d instanceof Refused r) {
+                refusal = r;
                 return Optional.of(r.reason());
             }
             if (d instanceof Granted g) {
@@ -219,6 +235,7 @@ final class RouteDrive {
 
     /** Ends the order at the robot's decision point (the horizon deleted) and fails the call with the reason. */
     private Verdict endHere(String why) {
+        endedHere = true;
         orders.send(orderId, ++updateId, List.of(node(baseEnd)), List.of());
         traffic.stopAt(robot, route.get(baseEnd));
         return new Verdict(false, why);

@@ -37,6 +37,8 @@ public final class TrafficControl {
     /** The doors tied to the door reservations, or null (reservations only). */
     private volatile DoorKeeper doors;
     private long requests;
+    /** Whether robots make way by themselves (see {@link #stepAside(boolean)}). */
+    private volatile boolean stepAside;
 
     /**
      * @param waitBoundSeconds how long a robot may wait for a resource before its action fails with the reason
@@ -78,6 +80,58 @@ public final class TrafficControl {
             return ds;
         });
         return keeper.open(robot, through);
+    }
+
+    /**
+     * Robots make way by themselves from now on (a side-node yield): one sent into a dead-end room that another robot
+     * holds does not wait at the room's door, the other's only way out, but steps aside to a free neighbouring stop
+     * node first and waits there for the door and the room together; one refused as a deadlock steps aside before its
+     * call fails, out of the way of the robots it would have waited for, and its caller re-plans from there. Off
+     * unless asked for: a caller that re-plans by itself (a test, a dispatcher of its own) finds the robot where it left it.
+     */
+    public TrafficControl stepAside(boolean on) {
+        this.stepAside = on;
+        return this;
+    }
+
+    boolean stepsAside() {
+        return stepAside;
+    }
+
+    void note(String line) {
+        log.accept(line);
+    }
+
+    /** Whether {@code node}, the route's next after {@code mouth}, is a dead end that others hold or were promised. */
+    synchronized boolean deadEndTaken(String robot, String mouth, String node) {
+        return table.map().hasNode(mouth) && table.map().hasNode(node) && table.deadEndTaken(mouth, node, robot);
+    }
+
+    /**
+     * A stop node next to the robot's decision point that it can step aside to now (the first by name): the node, the
+     * lane to it and the areas they lie in have room for it after everyone who holds or waits for them; never into the
+     * lift (a step aside is a plain drive).
+     */
+    synchronized Optional<String> aside(String robot) {
+        if (!table.robots().contains(robot) || table.isLost(robot)) {
+            return Optional.empty();
+        }
+        String at = table.decisionPoint(robot);
+        for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
+            if (!table.map().isStop(n)) {
+                continue;
+            }
+            boolean free = true;
+            for (Resource r : table.map().step(at, n)) {
+                java.util.Set<String> others = new java.util.HashSet<>(table.needing(r));
+                others.remove(robot);
+                free &= r.kind() != Resource.Kind.LIFT && others.size() + 1 <= r.capacity();
+            }
+            if (free) {
+                return Optional.of(n);
+            }
+        }
+        return Optional.empty();
     }
 
     public double waitBoundSeconds() {

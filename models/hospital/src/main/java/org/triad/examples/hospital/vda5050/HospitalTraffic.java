@@ -35,6 +35,8 @@ public final class HospitalTraffic {
     public static final int ROOM = 20;
     /** Robots the lift's cabin carries at once (the simulated cabin is 3 m by 3 m, but a courier drives to its centre). */
     public static final int LIFT_CAPACITY = 1;
+    /** The zone of the upper floor's places (its corridor waypoints and wards): one robot fewer than it has places. */
+    public static final String UPPER_FLOOR = "floor1";
 
     private HospitalTraffic() {
     }
@@ -88,6 +90,22 @@ public final class HospitalTraffic {
             }
         }
         lifts.forEach((lift, members) -> b.area(Kind.LIFT, lift, LIFT_CAPACITY, members.toArray(String[]::new)));
+        // the upper floor is a dead end of four places behind the lift: admitting one robot fewer keeps a place free
+        // there, so that a robot in a ward can always swap with one at the corridor (see building/README.md, zones)
+        List<String> upper = new ArrayList<>();
+        for (String w : HospitalFloor.UPPER_FLOOR_WAYPOINTS.keySet().stream().sorted().toList()) {
+            if (b.nodeIds().contains(w) && HospitalFloor.LIFT_LANDINGS.stream().noneMatch(l -> l.cabin().equals(w))) {
+                upper.add(w);
+            }
+        }
+        for (String e : b.edgeIds()) {
+            String[] ends = e.split("-");
+            if (ends.length == 2 && upper.contains(ends[0]) && upper.contains(ends[1])) {
+                upper.add(e);
+            }
+        }
+        long places = upper.stream().filter(b.nodeIds()::contains).count();
+        b.area(Kind.ZONE, UPPER_FLOOR, (int) places - 1, upper.toArray(String[]::new));
         doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
         corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
         return b.build();

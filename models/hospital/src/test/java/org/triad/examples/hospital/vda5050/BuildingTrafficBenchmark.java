@@ -34,14 +34,13 @@ import org.triad.vda5050.protocol.AgvState;
 /**
  * Traffic in the dyn4j building (issue #21's "Measured"): N couriers in ONE simulated hospital ({@code ./triad robot
  * --count N}, its own JVM, a real Mosquitto), each doing random deliveries (to a random room, then to another) and
- * patrols (three random corridor waypoints) for a stretch of simulated time, once under traffic control
+ * patrols (three random corridor waypoints) on both floors (the lift between them) for a stretch of simulated time, once under traffic control
  * ({@link TrafficControl} over {@link HospitalTraffic}'s map, doors kept by a {@link DoorKeeper}) and once without
  * (each edge driven at once: the robots meet in the building). Prints one row per fleet and mode: physical contacts
  * the building reported, standstills (60 simulated seconds in which no courier with a task reached a node), tasks
  * completed per simulated hour, drives that failed, waits for doors and corridors/lanes (median, p95, max, in
  * simulated seconds) and the master's CPU (this JVM: master control, traffic control, the couriers' loops).
- * One floor: the hospital's second floor and its lift are issue #20's (branch floors); guides need people and are
- * left out.
+ * Guides need people and are left out (the building has two, Alice and Bob, not one a courier).
  *
  * <pre>
  * mvn -B -q -pl models/hospital -am package -DskipTests
@@ -56,11 +55,14 @@ public final class BuildingTrafficBenchmark {
      * drive onto the lobby's waypoint among them).
      */
     private static final List<String> DESTINATIONS = HospitalFloor.ROOMS.stream().filter(r -> !r.equals(HospitalFloor.ROBOT_START)).toList();
+    /** The waypoints patrols go by: the corridors of both floors, not the lift's cabins (a courier rides through them). */
+    private static final List<String> PATROL = HospitalFloor.CORRIDOR_WAYPOINTS.stream()
+            .filter(w -> HospitalFloor.LIFT_LANDINGS.stream().noneMatch(l -> l.cabin().equals(w))).toList();
     /** A standstill: this many simulated seconds in which no courier with a task reached a node. */
     private static final double STANDSTILL = 60;
 
-    private record Row(int robots, boolean reserved, int contacts, int standstills, double simHours, long tasks, long failed, List<Double> doorWaits,
-            List<Double> laneWaits, double cpuSeconds, long routes) {
+    private record Row(int robots, boolean reserved, int contacts, int standstills, double longestStill, double simHours, long tasks, long failed,
+            List<Double> doorWaits, List<Double> liftWaits, List<Double> laneWaits, double cpuSeconds, long routes, long reservations, long asides) {
     }
 
     public static void main(String[] args) throws Exception {
@@ -86,17 +88,18 @@ public final class BuildingTrafficBenchmark {
                 System.err.println(format(r));
             }
         }
-        System.out.printf(Locale.ROOT, "%n%d simulated minutes per run at %.0fx real time, seed %d, one floor of the dyn4j hospital%n", (long) minutes,
+        System.out.printf(Locale.ROOT, "%n%.0f simulated minutes per run at %.0fx real time, seed %d, both floors of the dyn4j hospital%n", minutes,
                 speed, seed);
-        System.out.println("| robots | reservations | contacts | standstills | tasks/sim-h | failed drives | door waits med/p95/max s | corridor+lane waits med/p95/max s | master CPU ms per robot per sim-min | master CPU ms per route |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+        System.out.println("| robots | reservations | contacts | standstills | longest still s | tasks/sim-h | failed drives | steps aside | door waits med/p95/max s (n) | lift waits med/p95/max s (n) | corridor+lane waits med/p95/max s (n) | master CPU ms per robot per sim-min | master CPU ms per route | master CPU ms per reservation |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         rows.forEach(r -> System.out.println(format(r)));
     }
 
     private static String format(Row r) {
-        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.1f | %d | %s | %s | %.1f | %.2f |", r.robots, r.reserved ? "yes" : "no", r.contacts,
-                r.standstills, r.tasks / r.simHours, r.failed, waits(r.doorWaits, r.reserved), waits(r.laneWaits, r.reserved),
-                r.cpuSeconds * 1000 / r.robots / (r.simHours * 60), r.routes == 0 ? 0 : r.cpuSeconds * 1000 / r.routes);
+        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.0f | %.1f | %d | %s | %s | %s | %s | %.1f | %.2f | %s |", r.robots, r.reserved ? "yes" : "no",
+                r.contacts, r.standstills, r.longestStill, r.tasks / r.simHours, r.failed, r.reserved ? Long.toString(r.asides) : "-", waits(r.doorWaits, r.reserved), waits(r.liftWaits, r.reserved),
+                waits(r.laneWaits, r.reserved), r.cpuSeconds * 1000 / r.robots / (r.simHours * 60), r.routes == 0 ? 0 : r.cpuSeconds * 1000 / r.routes,
+                r.reservations == 0 ? "-" : String.format(Locale.ROOT, "%.2f", r.cpuSeconds * 1000 / r.reservations));
     }
 
     private static String waits(List<Double> w, boolean reserved) {
@@ -122,7 +125,7 @@ public final class BuildingTrafficBenchmark {
             // the table runs on the wall clock: a courier may wait 120 simulated seconds at the building's pace
             TrafficControl traffic = new TrafficControl(map, 120 / speed, log::add);
             if (reserved) {
-                traffic.keepDoors(keeper);
+                traffic.keepDoors(keeper).stepAside(true);
             }
             List<RemoteAgv> agvs = new ArrayList<>();
             for (int i = 1; i <= n; i++) {
@@ -154,7 +157,7 @@ public final class BuildingTrafficBenchmark {
                             stops.add(pick(DESTINATIONS, random));
                         } else { // a patrol
                             for (int k = 0; k < 3; k++) {
-                                stops.add(pick(HospitalFloor.CORRIDOR_WAYPOINTS, random));
+                                stops.add(pick(PATROL, random));
                             }
                         }
                         busy.put(agv.name(), true);
@@ -166,7 +169,7 @@ public final class BuildingTrafficBenchmark {
                             }
                             List<String> path = path(map, from, stop);
                             routes.incrementAndGet();
-                            ok = reserved ? agv.driveRoute(path, traffic) : driveEdges(agv, path);
+                            ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path)) : driveEdges(agv, path);
                             lastProgress.put(agv.name(), System.nanoTime());
                             if (!ok) {
                                 if (failed.incrementAndGet() <= 10) {
@@ -189,12 +192,20 @@ public final class BuildingTrafficBenchmark {
             int standstills = 0;
             long stillSince = System.nanoTime();
             Map<String, String> lastNode = new HashMap<>();
+            Map<String, Long> nodeSince = new HashMap<>();
+            double longestStill = 0;
             while (System.nanoTime() < end) {
                 Thread.sleep(200);
                 boolean moved = false;
+                long now = System.nanoTime();
                 for (RemoteAgv a : agvs) {
                     String node = a.state().map(AgvState::lastNodeId).orElse("");
-                    moved |= !node.equals(lastNode.put(a.name(), node)) && busy.getOrDefault(a.name(), false);
+                    boolean changed = !node.equals(lastNode.put(a.name(), node));
+                    moved |= changed && busy.getOrDefault(a.name(), false);
+                    if (changed || !busy.getOrDefault(a.name(), false)) {
+                        nodeSince.put(a.name(), now);
+                    }
+                    longestStill = Math.max(longestStill, (now - nodeSince.getOrDefault(a.name(), now)) / 1e9 * speed);
                 }
                 if (moved || busy.values().stream().noneMatch(b -> b)) {
                     stillSince = System.nanoTime();
@@ -217,31 +228,69 @@ public final class BuildingTrafficBenchmark {
             }
             int contacts = building.lines("contact courier-").size();
             List<Double> doorWaits = new ArrayList<>();
+            List<Double> liftWaits = new ArrayList<>();
             List<Double> laneWaits = new ArrayList<>();
             traffic.read(t -> {
                 // the table's clock is the wall clock: its waits in simulated seconds at the building's pace
                 t.stats().waits(Kind.DOOR).forEach(w -> doorWaits.add(w * speed));
+                t.stats().waits(Kind.LIFT).forEach(w -> liftWaits.add(w * speed));
                 for (Kind k : List.of(Kind.CORRIDOR, Kind.EDGE, Kind.NODE, Kind.ZONE)) {
                     t.stats().waits(k).forEach(w -> laneWaits.add(w * speed));
                 }
                 return null;
             });
-            return new Row(n, reserved, contacts, standstills, simSeconds / 3600, tasks.get(), failed.get(), doorWaits, laneWaits, cpu, routes.get());
+            return new Row(n, reserved, contacts, standstills, longestStill, simSeconds / 3600, tasks.get(), failed.get(), doorWaits, liftWaits, laneWaits,
+                    cpu, routes.get(), reserved ? traffic.requests() : 0, new ArrayList<>(log).stream().filter(l -> l.contains(" steps aside ")).count());
         }
     }
 
-    /** The node the courier last passed, as it reports it: where its next order starts. */
+    /**
+     * The node the courier last passed, as it reports it: where its next order starts. A drive cut short (refused at
+     * its decision point) returns while the AGV still drives there: its order ends first.
+     */
     private static String where(RemoteAgv agv) {
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        while (System.nanoTime() < deadline) {
+            AgvState s = agv.state().orElseThrow();
+            if (s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving()) {
+                return s.lastNodeId();
+            }
+            sleep(20);
+        }
         return agv.state().orElseThrow().lastNodeId();
     }
 
+    /** Each edge unreserved: a ride as the AGV's edge action, the pharmacy's door passed with its edge action, else a drive. */
     private static boolean driveEdges(RemoteAgv agv, List<String> path) {
+        List<RemoteAgv.EdgeAction> actions = edgeActions(path);
         for (int i = 1; i < path.size(); i++) {
-            if (!agv.drive(path.get(i - 1), path.get(i))) {
+            RemoteAgv.EdgeAction a = actions.get(i - 1);
+            String door = pharmacyDoor(path.get(i - 1), path.get(i));
+            boolean ok = a != null ? agv.traverse(path.get(i - 1), path.get(i), a.actionType(), a.parameters())
+                    : door != null ? agv.traverse(path.get(i - 1), path.get(i), "passDoor", Map.of("doorId", door)) : agv.drive(path.get(i - 1), path.get(i));
+            if (!ok) {
                 return false;
             }
         }
         return true;
+    }
+
+    /** The ride between the lift's landings as the edge action {@code ride}; every other edge a plain drive (null). */
+    static List<RemoteAgv.EdgeAction> edgeActions(List<String> path) {
+        List<RemoteAgv.EdgeAction> actions = new ArrayList<>();
+        for (int i = 1; i < path.size(); i++) {
+            String a = path.get(i - 1);
+            String b = path.get(i);
+            boolean ride = HospitalFloor.liftLandingAt(a).isPresent() && HospitalFloor.liftLandingAt(b).isPresent();
+            actions.add(ride ? new RemoteAgv.EdgeAction("ride", Map.of("liftId", HospitalFloor.liftLandingAt(a).get().lift())) : null);
+        }
+        return actions;
+    }
+
+    /** The controlled door between two waypoints, if the edge passes one (unreserved drives open it with passDoor). */
+    private static String pharmacyDoor(String a, String b) {
+        return HospitalFloor.CONTROLLED_DOORS.stream().filter(d -> List.of(a, b).contains(d.a()) && List.of(a, b).contains(d.b()))
+                .map(d -> d.door()).findFirst().orElse(null);
     }
 
     private static String pick(List<String> xs, Random random) {

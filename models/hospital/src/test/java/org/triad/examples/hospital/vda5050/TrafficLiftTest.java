@@ -45,6 +45,8 @@ class TrafficLiftTest {
             TrafficControl traffic = new TrafficControl(HospitalTraffic.map(new HospitalFloor()), 300, log::add).keepDoors(keeper);
             Resource lift = traffic.read(t -> t.map().area(HospitalFloor.LIFT).orElseThrow());
             assertEquals(HospitalTraffic.LIFT_CAPACITY, lift.capacity());
+            int upper = traffic.read(t -> t.map().area(HospitalTraffic.UPPER_FLOOR).orElseThrow().capacity());
+            assertEquals(3, upper, "the upper floor's four places (d1, d2, ward 4, ward 5) admit three robots");
 
             assertTrue(one.driveRoute(List.of("lobby", "c4", "c5", "c6", "c7"), traffic), one.lastFailure() + "\n" + log);
             assertTrue(two.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), two.lastFailure() + "\n" + log);
