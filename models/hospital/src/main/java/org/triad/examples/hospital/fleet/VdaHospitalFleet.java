@@ -398,6 +398,12 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             return Optional.of(new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), robots, List.of(), List.of()));
         }
 
+        /** One map per floor, with this courier on its own floor's. */
+        @Override
+        public Map<String, FloorMap> floors() {
+            return HospitalMaps.perFloor(floor().orElseThrow());
+        }
+
         @Override
         public Optional<Battery> battery() {
             return agv.state().map(s -> s.batteryState()).filter(b -> b != null).map(b -> new Battery(b.batteryCharge(), b.charging()));
