@@ -15,4 +15,9 @@ public interface BuildingContext extends FleetContext {
     default TrafficBoard traffic() {
         return new TrafficBoard();
     }
+
+    /** Where a provider whose building has devices (doors, lifts) shows their states to the operator (a fresh, unseen board by default). */
+    default DeviceBoard devices() {
+        return new DeviceBoard();
+    }
 }

@@ -83,6 +83,11 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
     }
 
     @Override
+    public java.util.Map<String, FloorMap> floors() {
+        return robot.floors();
+    }
+
+    @Override
     public Optional<org.triad.refarc.fleet.Pose> pose() {
         return robot.pose();
     }

@@ -10,6 +10,9 @@ import org.triad.runtime.component.ComponentFault;
  * a failure, and after a failure the goal is re-planned, at most maxReplans times in a row; the next
  * failure aborts the task with a remote-operation request on status. "In a row" means without a
  * successful action in between: a successful action resets the count, and so does a new goal.
+ * A planning failure that follows a failed action in the same row names that action's failure first
+ * (cause): the planner's "no plan" from where a stuck lift left the robot is the consequence, the
+ * lift's fault the reason, on the re-plan and on the abort.
  * Tasks that arrive meanwhile queue. Every step is reported on status.
  *
  * At most one request (plan or action) is outstanding; run (a TaskProgress) numbers requests, so a
@@ -30,6 +33,7 @@ component Controller {
   var int maxReplans = 3;
   var int failures = 0;
   var String reason = "";
+  var String cause = "";
 
   automaton {
     initial state Idle;
@@ -45,7 +49,7 @@ component Controller {
     Planning -> Planning on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
     Executing -> Executing on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
 
-    NextGoal -> Planning [run.hasNextGoal()] / { run.nextGoal(); failures = 0; planRequest = run.planRequest(); };
+    NextGoal -> Planning [run.hasNextGoal()] / { run.nextGoal(); failures = 0; cause = ""; planRequest = run.planRequest(); };
     NextGoal -> TaskDone [!run.hasNextGoal()] / { status = new Status.TaskCompleted(run.task()); };
 
     Planning -> NextGoal on plan [run.answers(plan) && plan.alreadySatisfied()] / {
@@ -56,7 +60,7 @@ component Controller {
       status = new Status.PlanFound(run.goal(), run.plan());
     };
     Planning -> Failed on plan [run.answers(plan) && run.planningFailed(plan)] / {
-      reason = "planning failed: " + run.planningFailure(plan);
+      reason = run.planningFailedAfter(cause, run.planningFailure(plan));
     };
 
     NextAction -> Executing [run.hasNextAction()] / {
@@ -69,23 +73,26 @@ component Controller {
       status = new Status.ActionSucceeded(actionResult.action());
       run.actionDone();
       failures = 0;
+      cause = "";
     };
     Executing -> Failed on actionResult [run.answers(actionResult) && !actionResult.succeeded()] / {
       status = new Status.ActionFailed(actionResult.action(), actionResult.reason());
       reason = "action " + actionResult.action() + " failed: " + actionResult.reason();
+      cause = reason;
     };
 
     Idle -> Idle on fault / { status = new Status.ComponentFailed(fault); };
     Planning -> Planning on fault [!run.concerns(fault)] / { status = new Status.ComponentFailed(fault); };
     Planning -> Failed on fault [run.concerns(fault)] / {
       status = new Status.ComponentFailed(fault);
-      reason = "planning failed: " + run.faultReason(fault);
+      reason = run.planningFailedAfter(cause, run.faultReason(fault));
     };
     Executing -> Executing on fault [!run.concerns(fault)] / { status = new Status.ComponentFailed(fault); };
     Executing -> Failed on fault [run.concerns(fault)] / {
       status = new Status.ComponentFailed(fault);
       status = new Status.ActionFailed(run.action(), run.faultReason(fault));
       reason = "action " + run.action() + " failed: " + run.faultReason(fault);
+      cause = reason;
     };
 
     Failed -> Planning [failures < maxReplans] / {

@@ -115,6 +115,18 @@ public final class TaskProgress {
         return outstanding != 0 && fault.message() instanceof Correlated c && c.requestId() == outstanding;
     }
 
+    /**
+     * Why a goal failed at planning: {@code planning failed: <why>}, or, when an action of the same goal failed just
+     * before (no action succeeded since), that action's failure first, since it is why the planner found no way on:
+     * {@code action ride(lift, c7, d1) failed: lift 'lift' stopped between floors 0 and 1; planning from there failed: <why>}.
+     *
+     * @param cause the failure of the action that led to this planning, or empty
+     */
+    public String planningFailedAfter(String cause, String planningFailure) {
+        return cause == null || cause.isEmpty() ? "planning failed: " + planningFailure
+                : cause + "; planning from there failed: " + planningFailure;
+    }
+
     public String faultReason(ComponentFault fault) {
         return "fault in " + fault.componentPath() + ": " + fault.causeDescription();
     }

@@ -191,8 +191,11 @@ class RefArcTest {
                 "replanning IsAt(c) (1 of 3): planning failed: busy",
                 "replanning IsAt(c) (2 of 3): action robot.move(a, b) failed: the platform reported failure",
                 "replanning IsAt(c) (3 of 3): action robot.move(a, b) failed: precondition violated: robot.loc() == a does not hold (robot is at e)",
-                "task GoTo(c) aborted at goal IsAt(c): planning failed: lost",
-                "remote operation requested for task GoTo(c) at goal IsAt(c): planning failed: lost"),
+                // the planning that failed last followed a failed action: the abort names that action's failure first
+                "task GoTo(c) aborted at goal IsAt(c): action robot.move(a, b) failed: precondition violated: robot.loc() == a does not hold"
+                        + " (robot is at e); planning from there failed: lost",
+                "remote operation requested for task GoTo(c) at goal IsAt(c): action robot.move(a, b) failed: precondition violated:"
+                        + " robot.loc() == a does not hold (robot is at e); planning from there failed: lost"),
                 r.log().stream().filter(l -> l.startsWith("replanning") || l.startsWith("task GoTo(c) aborted") || l.startsWith("remote")).toList());
     }
 

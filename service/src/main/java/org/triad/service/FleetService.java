@@ -418,13 +418,30 @@ public final class FleetService implements AutoCloseable {
                 continue;
             }
             if (floor.isPresent()) {
-                FloorMap f = floor.get();
-                FloorMap layout = new FloorMap(f.time(), f.bounds(), f.areas(), f.walls(), f.doors(), f.waypoints(), List.of(), f.items(), f.people());
                 org.triad.refarc.fleet.Pose p = quietly(l.robot()::pose);
-                return new Views.BuildingView(robots, layout, p == null ? null : p.mapId());
+                String layoutMap = p == null ? null : p.mapId();
+                Map<String, FloorMap> floors = new java.util.LinkedHashMap<>();
+                Map<String, FloorMap> each;
+                try {
+                    each = l.robot().floors();
+                } catch (RuntimeException e) {
+                    each = null; // drawn as one map below
+                }
+                if (each != null && !each.isEmpty()) {
+                    each.forEach((id, f) -> floors.put(id, withoutRobots(f)));
+                } else {
+                    floors.put(layoutMap == null ? "" : layoutMap, withoutRobots(floor.get()));
+                }
+                FloorMap layout = floors.getOrDefault(layoutMap == null ? "" : layoutMap, withoutRobots(floor.get()));
+                return new Views.BuildingView(robots, layout, layoutMap, floors);
             }
         }
-        return new Views.BuildingView(robots, null, null);
+        return new Views.BuildingView(robots, null, null, Map.of());
+    }
+
+    /** A floor's layout for the building's map: the robots come from their poses, not from one robot's picture. */
+    private static FloorMap withoutRobots(FloorMap f) {
+        return new FloorMap(f.time(), f.bounds(), f.areas(), f.walls(), f.doors(), f.waypoints(), List.of(), f.items(), f.people());
     }
 
     /**

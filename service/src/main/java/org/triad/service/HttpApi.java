@@ -57,6 +57,8 @@ final class HttpApi {
     private final HttpsSettings https;
     /** Robots waiting for a corridor, a door or the lift (traffic), for the operator page. */
     private volatile TrafficBoard traffic = new TrafficBoard();
+    /** The building's doors and lifts as they last reported (for the operator page). */
+    private volatile org.triad.building.DeviceBoard devices = new org.triad.building.DeviceBoard();
     private volatile String listenHost;
     private volatile int listenPort;
 
@@ -100,6 +102,12 @@ final class HttpApi {
             // answered below
         }
         throw new ServiceError(400, "bad-request", "?over= takes the seconds a wait must exceed to be listed (at least 0), not '" + over + "'");
+    }
+
+    /** Shows the devices of this board under {@code /api/devices}. */
+    HttpApi showing(org.triad.building.DeviceBoard board) {
+        this.devices = board;
+        return this;
     }
 
     HttpApi showing(TrafficBoard board) {
@@ -198,6 +206,7 @@ final class HttpApi {
         });
         app.get("/api/robots", ctx -> ctx.json(service.robots()));
         app.get("/api/traffic", ctx -> ctx.json(traffic.longerThan(waitBound(ctx.queryParam("over")))));
+        app.get("/api/devices", ctx -> ctx.json(devices.devices()));
         app.get("/api/building", ctx -> ctx.json(service.building()));
         app.get("/api/robots/{name}/floor", ctx -> ctx.json(service.floor(ctx.pathParam("name"))
                 .orElseThrow(() -> new ServiceError(404, "no-map", "robot " + ctx.pathParam("name") + " has no floor map (its platform gives none)"))));

@@ -105,7 +105,7 @@ public final class OpenApiDocument {
         response(op(robots, "get", "listRobots", "The fleet: each robot's state, current task and plan."), "200", "The robots", arrayOf("Robot"));
         errors((ObjectNode) robots.get("get"), "401");
         ObjectNode building = paths.putObject("/api/building");
-        response(op(building, "get", "building", "The building's map: every robot with its pose (mapId: its floor), and the layout the first robot with a floor map draws."),
+        response(op(building, "get", "building", "The building's map: every robot with its pose (mapId: its floor), the layout the first robot with a floor map draws (layout, on layoutMap), and floors: one layout per map id (floor)."),
                 "200", "The map", JSON.objectNode().put("type", "object"));
         errors((ObjectNode) building.get("get"), "401");
         ObjectNode floor = paths.putObject("/api/robots/{name}/floor");
@@ -137,6 +137,21 @@ public final class OpenApiDocument {
         response(op(traffic, "get", "listTrafficWaits", "Robots waiting for a corridor, a door or the lift longer than ?over= seconds: for what, behind whom."),
                 "200", "The waits, longest first", tw);
         errors((ObjectNode) traffic.get("get"), "400", "401");
+        ObjectNode deviceList = paths.putObject("/api/devices");
+        ObjectNode device = JSON.objectNode().put("type", "object");
+        device.putArray("required").add("kind").add("name").add("state").add("detail");
+        ObjectNode dp = device.putObject("properties");
+        dp.putObject("kind").put("type", "string").putArray("enum").add("door").add("lift");
+        dp.putObject("name").put("type", "string");
+        dp.putObject("state").put("type", "string").put("description", "a door's mode (OPEN, CLOSED, MOVING), a lift's motion (STOPPED, MOVING, FAULT)");
+        dp.putObject("detail").put("type", "string").put("description", "a lift's floor, destination and door; empty for a door");
+        dp.putObject("reason").put("type", "string").put("nullable", true).put("description", "why the device refused or stopped");
+        dp.putObject("since").put("type", "string").put("nullable", true).put("description", "the device's timestamp of this state (ISO 8601)");
+        ObjectNode dl = JSON.objectNode().put("type", "array");
+        dl.set("items", device);
+        response(op(deviceList, "get", "listDevices", "The building's doors and lifts as they last reported (empty for robots whose building serves no devices)."),
+                "200", "The devices, by kind and name", dl);
+        errors((ObjectNode) deviceList.get("get"), "401");
         ObjectNode requests = paths.putObject("/api/requests");
         response(op(requests, "get", "listRequests", "Open remote-operation requests (?all=true: also resolved ones)."), "200", "The requests",
                 arrayOf("RemoteOperationRequest"));

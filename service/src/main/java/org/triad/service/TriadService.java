@@ -95,10 +95,11 @@ public final class TriadService implements AutoCloseable {
         List<FleetRobot> robots = List.of();
         FleetService fleet = null;
         TrafficBoard traffic = new TrafficBoard(); // the robots' traffic controls show their waits here (operator page)
+        org.triad.building.DeviceBoard devices = new org.triad.building.DeviceBoard(); // and the building's doors and lifts
         try {
             AccessTokens tokens = AccessTokens.load(o.env(), o.config(), store);
             FleetRoster roster = new FleetRoster();
-            robots = connect(models, o, roster, traffic);
+            robots = connect(models, o, roster, traffic, devices);
             TaskCatalog catalog = new TaskCatalog(models.schema(), worldObjects(models, robots, o.situation()));
             GoalSolver solver = new GoalSolver(models.schema());
             // robots under traffic control: moves cost their expected wait (congestion), so plans may go round it
@@ -114,7 +115,7 @@ public final class TriadService implements AutoCloseable {
                 }
             }
             ObjectNode openApi = OpenApiDocument.of(catalog, VERSION);
-            HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https).showing(traffic);
+            HttpApi http = new HttpApi(fleet, tokens, new UserStore(store), new AuditLog(store), openApi, https).showing(traffic).showing(devices);
             int port;
             try {
                 port = http.start(o.host(), o.port());
@@ -157,7 +158,8 @@ public final class TriadService implements AutoCloseable {
     }
 
     /** The robots the options name; providers whose robots run under traffic control show their waits on {@code traffic}. */
-    static List<FleetRobot> connect(ApplicationModels models, Options o, FleetRoster roster, TrafficBoard traffic) {
+    static List<FleetRobot> connect(ApplicationModels models, Options o, FleetRoster roster, TrafficBoard traffic,
+            org.triad.building.DeviceBoard devices) {
         AppSchema schema = models.schema();
         List<RobotPlatformProvider> providers = new ArrayList<>();
         ServiceLoader.load(RobotPlatformProvider.class).forEach(providers::add);
@@ -201,6 +203,11 @@ public final class TriadService implements AutoCloseable {
             @Override
             public TrafficBoard traffic() {
                 return traffic;
+            }
+
+            @Override
+            public org.triad.building.DeviceBoard devices() {
+                return devices;
             }
 
             @Override

@@ -30,9 +30,11 @@ public final class Views {
     /**
      * The building's map: every robot (with its {@code pose}, whose {@code mapId} says the floor), and the
      * layout (rooms, walls, doors, waypoints, items, people) the first robot with a floor map draws, on
-     * {@code layoutMap} (that robot's map id), or null when no platform draws one.
+     * {@code layoutMap} (that robot's map id), or null when no platform draws one; {@code floors}: every floor's
+     * layout by map id, for a building of several floors (one map each), else just {@code layoutMap}'s.
      */
-    public record BuildingView(List<RobotView> robots, org.triad.refarc.fleet.FloorMap layout, String layoutMap) {
+    public record BuildingView(List<RobotView> robots, org.triad.refarc.fleet.FloorMap layout, String layoutMap,
+            java.util.Map<String, org.triad.refarc.fleet.FloorMap> floors) {
     }
 
     public record RequestView(long id, long task, String call, String robot, String goal, String reason, String raisedAt, String resolvedAt,

@@ -23,6 +23,14 @@ public interface FleetRobot extends AutoCloseable {
         return Optional.empty();
     }
 
+    /**
+     * The building's layout one map per floor, keyed by the map id a robot's {@link Pose#mapId()} names there, for a
+     * building of several floors; empty (the default) when {@link #floor()} is the one map. Called from other threads.
+     */
+    default java.util.Map<String, FloorMap> floors() {
+        return java.util.Map.of();
+    }
+
     /** Where the robot is now, if its platform reports it: for the building's map. Called from other threads. */
     default Optional<Pose> pose() {
         return Optional.empty();

@@ -104,14 +104,15 @@
       r.plan.length ? plan : el("div", { class: "muted" }, "no plan"));
   }
 
-  // one live map of the building: every robot where its platform reports it, one canvas per map id (floor),
-  // on the layout the first robot with a floor map draws; positions come with the event stream's "building" events
-  let layout = null, layoutMap = "";
+  // the building's live map, one canvas per map id (a floor): each floor's layout as /api/building gives it
+  // (every floor of a building of several, else the first robot's), and every robot on the map its pose names;
+  // positions come with the event stream's "building" events
+  let layouts = new Map();
   async function loadBuilding() {
     try {
       const b = await api("GET", "/api/building");
-      layout = b.layout;
-      layoutMap = b.layoutMap || "";
+      layouts = new Map(Object.entries(b.floors || {}));
+      if (layouts.size === 0 && b.layout) layouts.set(b.layoutMap || "", b.layout);
       drawBuilding(b.robots);
     } catch (e) {
       msg.textContent = e.message;
@@ -123,7 +124,7 @@
     const placed = robots.filter(r => r.pose);
     document.getElementById("no-positions").hidden = placed.length > 0;
     const floors = new Map();
-    if (layout) floors.set(layoutMap, []);
+    for (const id of layouts.keys()) floors.set(id, []);
     for (const r of placed) {
       const id = r.pose.mapId || "";
       if (!floors.has(id)) floors.set(id, []);
@@ -137,7 +138,7 @@
       }
       const marks = rs.map(r => ({ name: r.name, x: r.pose.x, y: r.pose.y,
         note: [r.presence !== "online" ? r.presence : null, r.battery ? Math.round(r.battery.charge) + " %" : null, r.task ? "#" + r.task : null].filter(x => x).join(", ") }));
-      const base = layout && id === layoutMap ? layout : around(marks);
+      const base = layouts.get(id) || around(marks);
       FloorMap.draw(canvas, Object.assign({}, base, { robots: marks }));
       canvas.dataset.robots = marks.map(m => m.name).sort().join(" ");
       canvas.dataset.updates = String(Number(canvas.dataset.updates || 0) + 1);

@@ -24,9 +24,9 @@ import org.triad.vda5050.broker.MosquittoBroker;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
- * The operator page in Debian's Chromium shows every robot of the building on one live map: two
- * couriers speaking VDA 5050 on a real Mosquitto, drawn where their states put them on the hospital's
- * layout, the map redrawn from the event stream while one of them drives, with each robot's battery.
+ * The operator page in Debian's Chromium shows every robot of the building on one live map per floor: two
+ * couriers speaking VDA 5050 on a real Mosquitto, drawn where their states put them on floor 0's layout (floor 1's
+ * drawn beside, empty), the map redrawn from the event stream while one of them drives, with each robot's battery.
  */
 class BuildingMapBrowserTest {
     private static final Path HOSPITAL = Path.of("../models/hospital/src/main/models").toAbsolutePath().normalize();
@@ -59,7 +59,12 @@ class BuildingMapBrowserTest {
             wait.ignoring(StaleElementReferenceException.class);
             String map = "#building canvas[data-map='" + SimulatedAgv.MAP_ID + "']";
             wait.until(d -> d.findElements(By.cssSelector(map)).stream().anyMatch(c -> "courier-1 courier-2".equals(c.getAttribute("data-robots"))));
-            assertEquals(1, browser.findElements(By.cssSelector("#building canvas")).size(), "one map: both couriers report the same map id");
+            // one map per floor: both couriers on floor 0's (the map id they report), floor 1's drawn without robots
+            assertEquals(2, browser.findElements(By.cssSelector("#building canvas")).size(), "one map per floor");
+            String upstairs = "#building canvas[data-map='" + SimulatedAgv.mapId(1) + "']";
+            assertEquals("", browser.findElement(By.cssSelector(upstairs)).getAttribute("data-robots"), "nobody upstairs");
+            assertTrue(browser.findElement(By.cssSelector(upstairs)).findElement(By.xpath("..")).getText().contains(SimulatedAgv.mapId(1)),
+                    "floor 1's map is captioned with its map id");
             assertTrue(blueDiscPixels(browser, map) > 40, "two robot discs are drawn");
             wait.until(d -> d.findElement(By.cssSelector("[data-robot='courier-1'] .robot-battery")).getText().startsWith("battery "));
 

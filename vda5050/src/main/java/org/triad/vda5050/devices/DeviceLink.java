@@ -14,24 +14,65 @@ import org.eclipse.paho.client.mqttv3.MqttException;
 import org.eclipse.paho.client.mqttv3.MqttMessage;
 import org.eclipse.paho.client.mqttv3.persist.MemoryPersistence;
 import org.triad.vda5050.mqtt.BrokerUnreachableException;
+import org.triad.vda5050.mqtt.MqttLink;
 import org.triad.vda5050.protocol.VdaJson;
 import org.triad.vda5050.security.ClientCredentials;
 
 /**
- * An MQTT connection for the device protocol ({@link DeviceMessages}): JSON messages on {@code triad/devices/v1/...},
- * QoS 1. A message that is not JSON of the expected shape is reported as one line and ignored. On a secured broker
- * ({@code ssl://}) it logs in as an identity from the credentials folder: the building's
- * ({@link org.triad.vda5050.security.BrokerCredentials#BUILDING}) to serve devices, master control's or a robot's to
- * ask them; the broker's ACL grants each only its side of the protocol.
+ * A connection for the device protocol ({@link DeviceMessages}): JSON messages on {@code triad/devices/v1/...},
+ * QoS 1. A message that is not JSON of the expected shape is reported as one line and ignored. Either an MQTT
+ * connection of its own ({@link #connect}), which on a secured broker ({@code ssl://}) logs in as an identity from the
+ * credentials folder (the building's, {@link org.triad.vda5050.security.BrokerCredentials#BUILDING}, to serve devices),
+ * or a share of master control's VDA 5050 connection ({@link #over}): the broker lets one connection in per identity,
+ * and its ACL already grants master control the asking side of the protocol (publish requests, read states), so
+ * whatever a master process asks of doors and lifts goes over the connection it already has, with no identity or
+ * secret more to deploy.
  */
 public final class DeviceLink implements AutoCloseable {
-    private final MqttClient client;
+    /** What carries the messages: an MQTT client of the link's own, or a shared VDA 5050 connection. */
+    private interface Transport {
+        void subscribe(String topic, Consumer<byte[]> handler) throws MqttException;
+
+        void publish(String topic, byte[] payload, boolean retained) throws MqttException;
+
+        void close() throws MqttException;
+    }
+
     private final Consumer<String> problems;
     private final Map<String, Consumer<byte[]>> handlers = new ConcurrentHashMap<>();
+    private Transport transport;
 
-    private DeviceLink(MqttClient client, Consumer<String> problems) {
-        this.client = client;
+    private DeviceLink(Consumer<String> problems) {
         this.problems = problems;
+    }
+
+    /**
+     * The device protocol over master control's connection ({@code link}, e.g. {@code MasterControl.link()}): on a
+     * secured broker as master control's identity. Closing this link drops its subscriptions, not the connection.
+     */
+    public static DeviceLink over(MqttLink link, Consumer<String> problems) {
+        Objects.requireNonNull(link, "link");
+        Objects.requireNonNull(problems, "problems");
+        DeviceLink d = new DeviceLink(problems);
+        java.util.List<Runnable> unsubscribe = new java.util.concurrent.CopyOnWriteArrayList<>();
+        d.transport = new Transport() {
+            @Override
+            public void subscribe(String topic, Consumer<byte[]> handler) {
+                unsubscribe.add(link.subscribeRaw(topic, handler));
+            }
+
+            @Override
+            public void publish(String topic, byte[] payload, boolean retained) {
+                link.publishRaw(topic, payload, retained);
+            }
+
+            @Override
+            public void close() {
+                unsubscribe.forEach(Runnable::run);
+                unsubscribe.clear();
+            }
+        };
+        return d;
     }
 
     /**
@@ -73,8 +114,9 @@ public final class DeviceLink implements AutoCloseable {
         try {
             MqttClient c = new MqttClient(broker, clientId, new MemoryPersistence());
             c.setTimeToWait(2000);
-            DeviceLink link = new DeviceLink(c, problems);
-            c.setCallback(link.new Callback());
+            DeviceLink link = new DeviceLink(problems);
+            link.transport = link.new OwnClient(c);
+            c.setCallback(link.new Callback(c));
             o.setCleanSession(true);
             o.setAutomaticReconnect(true);
             o.setMaxReconnectDelay(1000);
@@ -86,9 +128,9 @@ public final class DeviceLink implements AutoCloseable {
         }
     }
 
-    /** Receives messages of type {@code type} on {@code topic} (an exact topic). */
+    /** Receives messages of type {@code type} on {@code topic} (a topic or a filter with {@code +}). */
     public <T> void subscribe(String topic, Class<T> type, Consumer<T> handler) {
-        handlers.put(topic, payload -> {
+        Consumer<byte[]> parsing = payload -> {
             T message;
             try {
                 message = VdaJson.bind(VdaJson.parse(payload), type);
@@ -97,10 +139,15 @@ public final class DeviceLink implements AutoCloseable {
                 return;
             }
             handler.accept(message);
-        });
+        };
+        handlers.put(topic, parsing);
         try {
-            client.subscribe(topic, 1);
-        } catch (MqttException e) {
+            transport.subscribe(topic, payload -> {
+                if (handlers.get(topic) == parsing) { // a later subscription to the topic replaces this one
+                    parsing.accept(payload);
+                }
+            });
+        } catch (MqttException | RuntimeException e) {
             throw new IllegalStateException("cannot subscribe to " + topic + ": " + e.getMessage(), e);
         }
     }
@@ -112,8 +159,8 @@ public final class DeviceLink implements AutoCloseable {
      */
     public void publish(String topic, Object message, boolean retained) {
         try {
-            client.publish(topic, VdaJson.write(message), 1, retained);
-        } catch (MqttException e) {
+            transport.publish(topic, VdaJson.write(message), retained);
+        } catch (MqttException | RuntimeException e) {
             problems.accept("devices: could not publish to " + topic + ": " + e.getMessage());
         }
     }
@@ -121,16 +168,46 @@ public final class DeviceLink implements AutoCloseable {
     @Override
     public void close() {
         try {
-            if (client.isConnected()) {
-                client.disconnect(2000);
-            }
-            client.close();
+            transport.close();
         } catch (MqttException e) {
             problems.accept("devices: closing the connection: " + e.getMessage());
         }
     }
 
+    /** A connection of this link's own; messages arrive through {@link Callback}. */
+    private final class OwnClient implements Transport {
+        private final MqttClient client;
+
+        OwnClient(MqttClient client) {
+            this.client = client;
+        }
+
+        @Override
+        public void subscribe(String topic, Consumer<byte[]> handler) throws MqttException {
+            client.subscribe(topic, 1);
+        }
+
+        @Override
+        public void publish(String topic, byte[] payload, boolean retained) throws MqttException {
+            client.publish(topic, payload, 1, retained);
+        }
+
+        @Override
+        public void close() throws MqttException {
+            if (client.isConnected()) {
+                client.disconnect(2000);
+            }
+            client.close();
+        }
+    }
+
     private final class Callback implements MqttCallbackExtended {
+        private final MqttClient client;
+
+        Callback(MqttClient client) {
+            this.client = client;
+        }
+
         @Override
         public void connectComplete(boolean reconnect, String serverURI) {
             if (reconnect) {
@@ -151,9 +228,10 @@ public final class DeviceLink implements AutoCloseable {
 
         @Override
         public void messageArrived(String topic, MqttMessage message) {
-            Consumer<byte[]> h = handlers.get(topic);
-            if (h != null) {
-                h.accept(message.getPayload());
+            for (Map.Entry<String, Consumer<byte[]>> h : handlers.entrySet()) {
+                if (MqttLink.matches(h.getKey(), topic)) {
+                    h.getValue().accept(message.getPayload());
+                }
             }
         }
 

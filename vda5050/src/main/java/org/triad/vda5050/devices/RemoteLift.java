@@ -24,6 +24,10 @@ public final class RemoteLift {
     private final Object lock = new Object();
     private LiftState state;
     private String lastFailure;
+    /** The request a call waits for, its floor, and the first state that answered it (null while none has). */
+    private String awaited;
+    private int awaitedFloor;
+    private LiftState answer;
 
     /**
      * @param requester      who asks (a robot's serial number), for the device's log
@@ -41,6 +45,10 @@ public final class RemoteLift {
         link.subscribe(DeviceMessages.liftStateTopic(lift), LiftState.class, s -> {
             synchronized (lock) {
                 state = s;
+                // kept: the lift may serve a queued request right after this one's, and its next state names that one
+                if (awaited != null && awaited.equals(s.lastRequestId()) && answer == null && answers(s, awaitedFloor)) {
+                    answer = s;
+                }
                 lock.notifyAll();
             }
         });
@@ -56,28 +64,34 @@ public final class RemoteLift {
      */
     public boolean call(int floor) {
         String id = UUID.randomUUID().toString();
+        synchronized (lock) {
+            awaited = id;
+            awaitedFloor = floor;
+            answer = null;
+        }
         link.publish(DeviceMessages.liftRequestTopic(lift), new LiftRequest(id, requester, lift, floor, Instant.now().toString()), false);
         long deadline = System.nanoTime() + (long) (timeoutSeconds * 1e9);
         synchronized (lock) {
             while (true) {
-                if (state != null && id.equals(state.lastRequestId())) {
-                    if (DeviceMessages.FAULT.equals(state.motionState())) {
-                        String why = state.reason() != null ? state.reason() : "FAULT";
+                LiftState a = answer;
+                if (a != null) {
+                    awaited = null;
+                    if (DeviceMessages.FAULT.equals(a.motionState())) {
+                        String why = a.reason() != null ? a.reason() : "FAULT";
                         lastFailure = why.contains("lift '" + lift + "'") ? why : "lift '" + lift + "': " + why;
                         return false;
                     }
-                    if (DeviceMessages.STOPPED.equals(state.motionState()) && Integer.valueOf(floor).equals(state.currentFloor())
-                            && DeviceMessages.OPEN.equals(state.doorMode())) {
+                    if (DeviceMessages.STOPPED.equals(a.motionState()) && Integer.valueOf(floor).equals(a.currentFloor())
+                            && DeviceMessages.OPEN.equals(a.doorMode())) {
                         lastFailure = null;
                         return true;
                     }
-                    if (state.reason() != null) {
-                        lastFailure = "lift '" + lift + "' refused floor " + floor + ": " + state.reason();
-                        return false;
-                    }
+                    lastFailure = "lift '" + lift + "' refused floor " + floor + ": " + a.reason();
+                    return false;
                 }
                 long left = deadline - System.nanoTime();
                 if (left <= 0) {
+                    awaited = null;
                     lastFailure = String.format(Locale.ROOT, "lift '%s' did not answer the request for floor %d within %.1f s%s", lift, floor,
                             timeoutSeconds, state == null ? " (it never reported a state: is the device online?)"
                                     : " (last state " + state.motionState() + " at floor " + state.currentFloor() + ", door " + state.doorMode() + ")");
@@ -87,11 +101,18 @@ public final class RemoteLift {
                     TimeUnit.NANOSECONDS.timedWait(lock, left);
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
+                    awaited = null;
                     lastFailure = "interrupted while waiting for lift '" + lift + "'";
                     return false;
                 }
             }
         }
+    }
+
+    /** Whether a state naming the awaited request ends the call: FAULT, a refusal (a reason), or the cabin open at {@code floor}. */
+    private static boolean answers(LiftState s, int floor) {
+        return DeviceMessages.FAULT.equals(s.motionState()) || s.reason() != null
+                || DeviceMessages.STOPPED.equals(s.motionState()) && Integer.valueOf(floor).equals(s.currentFloor()) && DeviceMessages.OPEN.equals(s.doorMode());
     }
 
     /** The lift's last reported state, if it ever reported one. */

@@ -45,9 +45,13 @@ public final class MqttLink implements AutoCloseable {
     private final String broker;
     private final Consumer<String> problems;
     private final Map<String, Consumer<Received>> handlers = new ConcurrentHashMap<>();
+    /** Subscriptions outside VDA 5050 (the building's device protocol): their payloads are handed over unparsed. */
+    private final Map<String, List<Consumer<byte[]>>> rawHandlers = new ConcurrentHashMap<>();
     private final List<Runnable> reconnectListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<String>> sentListeners = new CopyOnWriteArrayList<>();
     private final ExecutorService dispatch;
+    /** Delivers the raw subscriptions' messages, apart from VDA 5050's (whose handlers may wait for one of them). */
+    private final ExecutorService rawDispatch;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong rejected = new AtomicLong();
     private volatile boolean connected;
@@ -58,6 +62,11 @@ public final class MqttLink implements AutoCloseable {
         this.client = new MqttAsyncClient(broker, clientId, new MemoryPersistence());
         this.dispatch = Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, "vda5050-" + clientId);
+            t.setDaemon(true);
+            return t;
+        });
+        this.rawDispatch = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "devices-" + clientId);
             t.setDaemon(true);
             return t;
         });
@@ -187,6 +196,37 @@ public final class MqttLink implements AutoCloseable {
         }
     }
 
+    /**
+     * Subscribes with QoS 1 to a topic outside VDA 5050 (e.g. the building's device protocol,
+     * {@code triad/devices/v1/...}), sharing this connection and so its identity on a secured broker: messages
+     * on it are neither parsed nor validated here but handed over as bytes, in arrival order on a thread apart from the
+     * VDA 5050 messages' (whose handlers may wait for a device's answer), to
+     * every handler subscribed to a matching filter. The returned action removes this handler (the last one
+     * for its filter unsubscribes).
+     */
+    public Runnable subscribeRaw(String filter, Consumer<byte[]> handler) {
+        Objects.requireNonNull(handler, "handler");
+        if (Topic.parse(filter.replace("+", "x").replace("#", "x")).isPresent()) {
+            throw new IllegalArgumentException("a VDA 5050 topic is subscribed with subscribe(), not as raw bytes: " + filter);
+        }
+        rawHandlers.computeIfAbsent(filter, f -> new CopyOnWriteArrayList<>()).add(handler);
+        try {
+            client.subscribe(filter, 1).waitForCompletion(5000);
+        } catch (MqttException e) {
+            throw new IllegalStateException("cannot subscribe to " + filter + " on " + broker + ": " + reason(e), e);
+        }
+        return () -> {
+            List<Consumer<byte[]>> list = rawHandlers.get(filter);
+            if (list != null && list.remove(handler) && list.isEmpty() && rawHandlers.remove(filter, list)) {
+                try {
+                    client.unsubscribe(filter);
+                } catch (MqttException e) {
+                    // the connection is gone; so is the subscription's use
+                }
+            }
+        };
+    }
+
     /** Publishes a message (QoS 1) after checking it against its topic's schema; buffered while reconnecting. */
     public void publish(String mqttTopic, Object message, boolean retained) {
         byte[] payload = validated(mqttTopic, message);
@@ -203,6 +243,24 @@ public final class MqttLink implements AutoCloseable {
         }
     }
 
+    /** Hands a message on a raw subscription to its handlers (on the raw dispatch thread); false when no raw filter matches. */
+    private boolean deliverRaw(String mqttTopic, byte[] payload) {
+        boolean raw = false;
+        for (Map.Entry<String, List<Consumer<byte[]>>> h : rawHandlers.entrySet()) {
+            if (matches(h.getKey(), mqttTopic)) {
+                raw = true;
+                for (Consumer<byte[]> c : h.getValue()) {
+                    try {
+                        c.accept(payload);
+                    } catch (RuntimeException e) {
+                        problems.accept("vda5050: handling a message on " + mqttTopic + " failed: " + e);
+                    }
+                }
+            }
+        }
+        return raw;
+    }
+
     private static byte[] validated(String mqttTopic, Object message) {
         Topic.Address a = Topic.parse(mqttTopic)
                 .orElseThrow(() -> new IllegalArgumentException("not a VDA 5050 topic: " + mqttTopic));
@@ -217,6 +275,9 @@ public final class MqttLink implements AutoCloseable {
 
     private void deliver(String mqttTopic, byte[] payload) {
         received.incrementAndGet();
+        if (!mqttTopic.startsWith(Topic.INTERFACE + "/") && handlers.keySet().stream().noneMatch(f -> matches(f, mqttTopic))) {
+            return; // a message for a raw subscription that was dropped meanwhile
+        }
         try {
             Received r = Inbound.read(mqttTopic, payload);
             for (Map.Entry<String, Consumer<Received>> h : handlers.entrySet()) {
@@ -232,7 +293,8 @@ public final class MqttLink implements AutoCloseable {
         }
     }
 
-    static boolean matches(String filter, String topic) {
+    /** Whether an MQTT topic filter ({@code +} one level, {@code #} the rest) matches a topic. */
+    public static boolean matches(String filter, String topic) {
         String[] f = filter.split("/", -1);
         String[] t = topic.split("/", -1);
         for (int i = 0; i < f.length; i++) {
@@ -252,7 +314,9 @@ public final class MqttLink implements AutoCloseable {
             connected = true;
             if (reconnect) {
                 dispatch.execute(() -> {
-                    for (String filter : handlers.keySet()) {
+                    List<String> filters = new java.util.ArrayList<>(handlers.keySet());
+                    filters.addAll(rawHandlers.keySet());
+                    for (String filter : filters) {
                         try {
                             client.subscribe(filter, 1);
                         } catch (MqttException e) {
@@ -272,6 +336,12 @@ public final class MqttLink implements AutoCloseable {
         @Override
         public void messageArrived(String topic, MqttMessage message) {
             byte[] payload = message.getPayload();
+            if (!topic.startsWith(Topic.INTERFACE + "/") && rawHandlers.keySet().stream().anyMatch(f -> matches(f, topic))) {
+                // a thread of their own: a VDA 5050 handler may wait (e.g. for a door to open) for a device's message
+                received.incrementAndGet();
+                rawDispatch.execute(() -> deliverRaw(topic, payload));
+                return;
+            }
             dispatch.execute(() -> deliver(topic, payload));
         }
 
@@ -294,6 +364,7 @@ public final class MqttLink implements AutoCloseable {
     }
 
     private void closeQuietly() {
+        rawDispatch.shutdown();
         dispatch.shutdown();
         try {
             dispatch.awaitTermination(1, TimeUnit.SECONDS);

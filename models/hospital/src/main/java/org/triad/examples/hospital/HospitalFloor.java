@@ -165,6 +165,14 @@ public final class HospitalFloor {
         }
     }
 
+    /** Where floor 1 begins in the simulation's plane (x, metres): floor 0 lies west of it, floor 1 east (8 m east of floor 0's cabin). */
+    public static final double FLOOR_1_WEST_X = 31;
+
+    /** The floor of a point of the simulation's plane (0 or 1): the floors lie side by side in one dyn4j world. */
+    public static int floorAt(double x) {
+        return x >= FLOOR_1_WEST_X ? 1 : 0;
+    }
+
     /** The floor of a model waypoint (0 or 1). */
     public static int floorOf(String waypoint) {
         return UPPER_FLOOR_WAYPOINTS.getOrDefault(waypoint, 0);

@@ -116,10 +116,16 @@ final class SimulatedHospitalRobot implements FleetRobot {
         return Optional.of(hospital.map());
     }
 
+    /** One map per floor (the simulation draws both floors side by side). */
+    @Override
+    public java.util.Map<String, FloorMap> floors() {
+        return HospitalMaps.perFloor(hospital.map());
+    }
+
     @Override
     public Optional<Pose> pose() {
         return hospital.map().robots().stream().filter(m -> m.name().equals(name)).findFirst()
-                .map(m -> new Pose(m.x(), m.y(), 0, org.triad.examples.hospital.vda5050.SimulatedAgv.MAP_ID));
+                .map(m -> new Pose(m.x(), m.y(), 0, org.triad.examples.hospital.vda5050.SimulatedAgv.mapId(HospitalFloor.floorAt(m.x()))));
     }
 
     @Override

@@ -25,6 +25,7 @@ import org.triad.vda5050.master.RemoteAgv;
 import org.triad.vda5050.master.TrafficControl;
 import org.triad.vda5050.master.DoorKeeper;
 import org.triad.vda5050.devices.DeviceLink;
+import org.triad.vda5050.devices.DeviceWatch;
 import org.triad.vda5050.master.VdaTimeouts;
 
 import generated.hospital.HospitalActionExecutor;
@@ -110,7 +111,11 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             building.traffic().add(traffic::waiting); // the operator page's "Waiting for traffic"
             building.traffic().addCosts(traffic.congestion(SECONDS_PER_MOVE)); // the planner prices moves by their expected wait
         }
-        AutoCloseable doors = traffic == null ? null : keepDoors(broker, traffic);
+        AutoCloseable doors = traffic == null ? null : keepDoors(master, traffic);
+        DeviceWatch watch = new DeviceWatch(DeviceLink.over(master.link(), line -> System.err.println("triad serve: " + line)));
+        if (context instanceof BuildingContext building) {
+            building.devices().add(watch::devices); // the operator page's doors and lifts
+        }
         Roster roster = new Roster(master, context.changes(), traffic);
         AgvDiscovery discovery = new AgvDiscovery(master, new AgvDiscovery.Requirements(MasterControl.TRIAD, allowed, REQUIRED_ACTIONS,
                 Math.max(wait, FACTSHEET_SECONDS), timeouts.reconnectGraceSeconds()), roster, line -> System.err.println("triad serve: " + line));
@@ -129,7 +134,6 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         }
         Runnable closeAll = () -> {
             discovery.close();
-            master.close();
             if (doors != null) {
                 try {
                     doors.close();
@@ -137,6 +141,8 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
                     System.err.println("triad serve: closing the doors' link: " + e.getMessage());
                 }
             }
+            watch.close();
+            master.close();
         };
         List<FleetRobot> robots = roster.handOver(closeAll);
         if (robots.isEmpty()) {
@@ -163,15 +169,11 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     /**
      * The building's doors (served as devices on the same broker by {@code ./triad robot}) tied to the door
-     * reservations: opened for the robot granted a way through, closed once nobody holds or waits for them.
-     * Plain brokers only (the secured broker's ACL has no device topics yet): on another one doors stay as they are.
+     * reservations: opened for the robot granted a way through, closed once nobody holds or waits for them. Asked over
+     * master control's connection (on a secured broker as master control, which the ACL lets ask devices).
      */
-    private static AutoCloseable keepDoors(String broker, TrafficControl traffic) {
-        if (!broker.startsWith("tcp://")) {
-            System.err.println("triad serve: doors are not tied to traffic control on " + broker + " (the device protocol needs a plain tcp:// broker)");
-            return null;
-        }
-        DeviceLink link = DeviceLink.connect(broker, "triad-serve-doors-" + ProcessHandle.current().pid(), line -> System.err.println("triad serve: " + line));
+    private static AutoCloseable keepDoors(MasterControl master, TrafficControl traffic) {
+        DeviceLink link = DeviceLink.over(master.link(), line -> System.err.println("triad serve: " + line));
         DoorKeeper keeper = new DoorKeeper(link, HospitalTraffic.keptDoors(new HospitalFloor()), DOOR_SECONDS,
                 line -> System.err.println("triad serve: " + line));
         traffic.keepDoors(keeper);
@@ -394,6 +396,12 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             List<FloorMap.Mark> robots = p.map(q -> List.of(new FloorMap.Mark(name, q.x(), q.y(), agv.state().map(s -> s.loads() == null ? ""
                     : String.join(", ", s.loads().stream().map(l -> l.loadId()).toList())).orElse("")))).orElse(List.of());
             return Optional.of(new FloorMap(0, m.bounds(), m.areas(), m.walls(), m.doors(), m.waypoints(), robots, List.of(), List.of()));
+        }
+
+        /** One map per floor, with this courier on its own floor's. */
+        @Override
+        public Map<String, FloorMap> floors() {
+            return HospitalMaps.perFloor(floor().orElseThrow());
         }
 
         @Override

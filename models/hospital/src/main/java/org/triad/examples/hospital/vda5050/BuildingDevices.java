@@ -8,10 +8,12 @@ import java.util.function.Consumer;
 import org.triad.vda5050.devices.DeviceLink;
 import org.triad.vda5050.devices.RemoteDoor;
 import org.triad.vda5050.devices.RemoteLift;
+import org.triad.vda5050.master.MasterControl;
 
 /**
- * The building's doors and lifts as one robot's world binding reaches them: over the device protocol on the broker of
- * its master control, connected when a door or lift is first needed (a task that needs none opens no connection).
+ * The building's doors and lifts as one robot's world binding reaches them: over the device protocol on its master
+ * control's connection ({@link DeviceLink#over}), so on a secured broker as master control's identity, which the ACL
+ * lets ask doors and lifts; subscribed when a door or lift is first needed.
  */
 final class BuildingDevices implements AutoCloseable {
     /** Wall-clock seconds to wait for the building to open (or close) a door. */
@@ -19,7 +21,7 @@ final class BuildingDevices implements AutoCloseable {
     /** Wall-clock seconds to wait for a lift to stand open at a floor: a ride of 8 simulated seconds per floor at 1x, and margin. */
     static final double LIFT_SECONDS = 60;
 
-    private final String broker;
+    private final MasterControl master;
     private final String requester;
     private final double doorSeconds;
     private final double liftSeconds;
@@ -29,8 +31,8 @@ final class BuildingDevices implements AutoCloseable {
     private DeviceLink link;
     private boolean closed;
 
-    BuildingDevices(String broker, String requester, double doorSeconds, double liftSeconds, Consumer<String> problems) {
-        this.broker = Objects.requireNonNull(broker, "broker");
+    BuildingDevices(MasterControl master, String requester, double doorSeconds, double liftSeconds, Consumer<String> problems) {
+        this.master = Objects.requireNonNull(master, "master");
         this.requester = Objects.requireNonNull(requester, "requester");
         this.doorSeconds = doorSeconds;
         this.liftSeconds = liftSeconds;
@@ -54,10 +56,10 @@ final class BuildingDevices implements AutoCloseable {
 
     private synchronized DeviceLink link() {
         if (closed) {
-            throw new IllegalStateException("the robot's connection to the building's devices is closed");
+            throw new IllegalStateException("the robot's use of the building's devices is closed");
         }
         if (link == null) {
-            link = DeviceLink.connect(broker, "triad-devices-" + requester + "-" + Long.toHexString(System.nanoTime()), problems);
+            link = DeviceLink.over(master.link(), problems);
         }
         return link;
     }

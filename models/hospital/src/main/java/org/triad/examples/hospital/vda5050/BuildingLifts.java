@@ -23,13 +23,17 @@ import org.triad.vda5050.devices.DeviceMessages.LiftState;
  * building's clock (the cabin closes its door, travels and opens at the floor; at the floor already, it opens there).
  * A request that comes while the cabin travels elsewhere waits for it to stop, then is served (in the order they
  * came); so does a request to leave while another robot stands in the cabin (it does not carry off a robot that did
- * not ask, unless that robot stays longer than {@value #DWELL_SECONDS} simulated seconds). The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
+ * not ask, unless that robot stays longer than {@value #DWELL_SECONDS} simulated seconds), and a cabin that has just
+ * opened at a floor holds its door open {@value #HOLD_SECONDS} simulated seconds before it serves the next request, so
+ * that the robot it came for can drive in before a robot queued elsewhere calls it away. The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
  * door changes, naming the request it last acted on; a lift stopped between floors reports FAULT with the reason, and
  * every request that comes then is answered FAULT with it.
  */
 public final class BuildingLifts {
     /** Simulated seconds a waiting request gives a robot standing in the cabin to leave it. */
     static final double DWELL_SECONDS = 30;
+    /** Simulated seconds a cabin that opened at a floor waits before it serves a queued request: time for its robot to enter. */
+    static final double HOLD_SECONDS = 10;
 
     private record Waiting(LiftRequest request, double since) {
     }
@@ -38,6 +42,8 @@ public final class BuildingLifts {
     private final Map<String, String> lastRequest = new LinkedHashMap<>();
     private final Map<String, LiftState> published = new LinkedHashMap<>();
     private final Map<String, Deque<Waiting>> waiting = new LinkedHashMap<>();
+    /** When each lift's cabin last stood open at a floor (simulated seconds). */
+    private final Map<String, Double> openedAt = new LinkedHashMap<>();
 
     private BuildingLifts(DeviceLink link) {
         this.link = link;
@@ -93,7 +99,7 @@ public final class BuildingLifts {
     private void step(Simulation s) {
         for (Lift l : s.lifts()) {
             Deque<Waiting> q = waiting.get(l.name());
-            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING
+            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING && s.time() - openedAt.getOrDefault(l.name(), -HOLD_SECONDS) >= HOLD_SECONDS
                     && (!leavesSomeoneBehind(s, l, q.peek().request()) || s.time() - q.peek().since() >= DWELL_SECONDS)) {
                 serve(s, l, q.poll().request());
             }
@@ -101,6 +107,9 @@ public final class BuildingLifts {
             LiftState last = published.get(l.name());
             if (last == null || !Objects.equals(now.motionState(), last.motionState()) || !Objects.equals(now.currentFloor(), last.currentFloor())
                     || !Objects.equals(now.doorMode(), last.doorMode())) {
+                if (DeviceMessages.STOPPED.equals(now.motionState()) && DeviceMessages.OPEN.equals(now.doorMode())) {
+                    openedAt.put(l.name(), s.time());
+                }
                 publish(s, l, null);
             }
         }

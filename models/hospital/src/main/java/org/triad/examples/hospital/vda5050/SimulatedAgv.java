@@ -72,8 +72,13 @@ import generated.hospital.domain.WayPoint;
  * {@link SimulationClock}), and while its robot drives it handles the messages that arrive meanwhile.
  */
 public final class SimulatedAgv implements AutoCloseable {
-    /** The map all positions refer to. */
-    public static final String MAP_ID = "hospital";
+    /** Floor 0's map (the lobby's, where every courier starts): a position's {@code mapId} is its floor's, {@link #mapId(int)}. */
+    public static final String MAP_ID = "hospital-0";
+
+    /** The VDA 5050 map id of a floor of the hospital ({@code hospital-0}, {@code hospital-1}): one map per floor, as VDA 5050 has it. */
+    public static String mapId(int floor) {
+        return "hospital-" + floor;
+    }
     private final String broker;
     private final String serial;
     private final double speed;
@@ -679,7 +684,7 @@ public final class SimulatedAgv implements AutoCloseable {
 
     private AgvPosition position() {
         Vec2 p = robot.position();
-        return new AgvPosition(p.x(), p.y(), normalized(robot.heading()), MAP_ID, true);
+        return new AgvPosition(p.x(), p.y(), normalized(robot.heading()), mapId(HospitalFloor.floorAt(p.x())), true);
     }
 
     private Velocity velocity() {

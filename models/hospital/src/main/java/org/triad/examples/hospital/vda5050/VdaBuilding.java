@@ -36,6 +36,8 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
     private final HospitalObjects objects;
     private final HospitalKnowledge knowledge;
     private final BuildingDevices devices;
+    /** The doors traffic control keeps (opens on reservation), or none without traffic control. */
+    private final java.util.Set<String> keptDoors;
     private final Object failureLock = new Object();
     /** Why the last door or lift action failed on a device (not on the AGV); null after any other outcome. */
     private String deviceFailure;
@@ -44,12 +46,13 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
     private final TrafficControl traffic;
 
     VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge, BuildingDevices devices) {
-        this(agv, floor, objects, knowledge, devices, null);
+        this(agv, floor, objects, knowledge, devices, null, java.util.List.of());
     }
 
     VdaBuilding(RemoteAgv agv, HospitalFloor floor, HospitalObjects objects, HospitalKnowledge knowledge, BuildingDevices devices,
-            TrafficControl traffic) {
+            TrafficControl traffic, java.util.Collection<String> keptDoors) {
         this.traffic = traffic;
+        this.keptDoors = java.util.Set.copyOf(keptDoors);
         this.agv = Objects.requireNonNull(agv, "agv");
         this.floor = Objects.requireNonNull(floor, "floor");
         this.objects = Objects.requireNonNull(objects, "objects");
@@ -57,14 +60,21 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
         this.devices = Objects.requireNonNull(devices, "devices");
     }
 
+    /**
+     * A corridor edge the AGV does not report blocked. An edge blocked only by doors that traffic control keeps (opens for
+     * the robot its reservation lets through, closes when nobody needs it) is open to plan with: the door is closed now
+     * because nobody needed it, and opens when this robot does.
+     */
     @Override
     public boolean adj(WayPoint a, WayPoint b) {
         if (!floor.isCorridor(a.name(), b.name())) {
             return false;
         }
         String edge = a.name() + "-" + b.name();
-        return agv.state().map(s -> s.information("blockedEdge").stream()
-                .noneMatch(i -> i.infoReferences().stream().anyMatch(r -> r.referenceValue().equals(edge)))).orElse(true);
+        boolean reported = agv.state().map(s -> s.information("blockedEdge").stream()
+                .anyMatch(i -> i.infoReferences().stream().anyMatch(r -> r.referenceValue().equals(edge)))).orElse(false);
+        return !reported || !keptDoors.isEmpty() && floor.route(a.name(), b.name()).map(floor::doorsOn)
+                .map(doors -> !doors.isEmpty() && keptDoors.containsAll(doors)).orElse(false);
     }
 
     /** The model edge's route length, metres (as the simulated building's). */

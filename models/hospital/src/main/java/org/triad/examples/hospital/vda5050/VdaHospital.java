@@ -32,12 +32,17 @@ import generated.hospital.HospitalStateProvider;
  * }</pre>
  */
 public final class VdaHospital implements AutoCloseable {
+    /**
+     * What master control knows of items and people, one per master: its couriers share one building, so a person
+     * that one courier guided, or an item it picked, is where that courier left them for every other courier too.
+     */
+    private static final java.util.Map<MasterControl, HospitalKnowledge> KNOWLEDGE = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
     private final HospitalObjects objects = new HospitalObjects();
     private final VdaCourier courier;
     private final VdaBuilding building;
     private final BuildingDevices devices;
 
-    /** Doors and lifts are reached on the master's broker with the default timeouts (10 s a door, 60 s a lift). */
+    /** Doors and lifts are reached over the master's connection with the default timeouts (10 s a door, 60 s a lift). */
     public VdaHospital(MasterControl master, String serialNumber) {
         this(master, serialNumber, null);
     }
@@ -67,10 +72,13 @@ public final class VdaHospital implements AutoCloseable {
             double liftSeconds) {
         Objects.requireNonNull(master, "master");
         RemoteAgv agv = master.agv(serialNumber);
-        HospitalKnowledge knowledge = new HospitalKnowledge();
-        devices = new BuildingDevices(master.broker(), serialNumber, doorSeconds, liftSeconds, System.err::println);
+        HospitalKnowledge knowledge = KNOWLEDGE.computeIfAbsent(master, m -> new HospitalKnowledge());
+        devices = new BuildingDevices(master, serialNumber, doorSeconds, liftSeconds, System.err::println);
         courier = new VdaCourier(agv, objects, knowledge, traffic);
-        building = new VdaBuilding(agv, new HospitalFloor(), objects, knowledge, devices, traffic);
+        HospitalFloor floor = new HospitalFloor();
+        // under traffic control the doors it keeps open on reservation: a door closed because nobody needed it blocks no plan
+        building = new VdaBuilding(agv, floor, objects, knowledge, devices, traffic,
+                traffic == null ? java.util.List.of() : HospitalTraffic.keptDoors(floor));
     }
 
     public HospitalObjects objects() {
@@ -85,7 +93,7 @@ public final class VdaHospital implements AutoCloseable {
         return building;
     }
 
-    /** Closes the connection to the building's devices, if a door or lift action opened one. */
+    /** Drops the subscriptions to the building's devices that door or lift actions made (master control's connection stays). */
     @Override
     public void close() {
         devices.close();
