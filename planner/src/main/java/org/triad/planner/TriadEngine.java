@@ -107,6 +107,11 @@ public final class TriadEngine implements PddlPlanner {
      */
     static final long COST_MIN_WORK = WorkMeter.UNITS_PER_SECOND / 5;
     /**
+     * Work the cost-optimal A* ({@link CostSearch#cheapest}) may spend before the shortest plan is
+     * searched for and made cheaper (about 20 ms; a hospital delivery needs about a tenth of it).
+     */
+    static final long COST_FIRST_WORK = WorkMeter.UNITS_PER_SECOND / 50;
+    /**
      * Work granted to improving a first plan of several goals per square of its length
      * ({@link WorkMeter} units): a longer plan needs more evaluations, each on a larger task, so a
      * 60-step plan gets about 0.4 s worth more, 117 steps 1.4 s, 250 steps 6 s, within
@@ -231,6 +236,14 @@ public final class TriadEngine implements PddlPlanner {
         boolean singleGoalAstar = false;
         List<Integer> open = new ArrayList<>();
         for (int g : q.goalPos()) if (Arrays.binarySearch(q.init(), g) < 0) open.add(g);
+        if (minimizeCost && improvementCap > 0 && CostSearch.hasVaryingCosts(task)) {
+            // the cheapest plan outright when A* under LM-cut proves it on a small budget (a robot's goal
+            // in metres): no shortest plan to find and make cheaper
+            CostSearch cheapest = new CostSearch(task, succ, deadline, COST_FIRST_WORK);
+            int[] p = cheapest.cheapest(q.init(), q.goalPos(), q.goalNeg());
+            effort[0] += cheapest.expanded();
+            if (p != null) return solved(task, p, false, stats(groundMs, searchStart, effort));
+        }
         if (open.size() == 1 && UnaryGraphSearch.applies(task, q.goalPos(), q.goalNeg())) {
             plan = UnaryGraphSearch.search(task, q.init(), q.goalPos()[0]);
             exact = true;
@@ -324,11 +337,14 @@ public final class TriadEngine implements PddlPlanner {
             plan = cheaper.improve(q.init(), q.goalPos(), q.goalNeg(), plan);
             bestSoFar |= cheaper.timedOut();
         }
+        return solved(task, plan, bestSoFar, stats(groundMs, searchStart, effort));
+    }
+
+    private static SolveResult solved(SearchTask task, int[] plan, boolean bestSoFar, SolveResult.Stats stats) {
         List<PddlStep> steps = new ArrayList<>(plan.length);
         for (int o : plan) if (!task.ops[o].artificial()) steps.add(task.ops[o].toAction());
         PddlPlan result = new PddlPlan(steps);
-        return bestSoFar ? SolveResult.bestSoFar(result, stats(groundMs, searchStart, effort))
-                : SolveResult.solved(result, stats(groundMs, searchStart, effort));
+        return bestSoFar ? SolveResult.bestSoFar(result, stats) : SolveResult.solved(result, stats);
     }
 
     /**

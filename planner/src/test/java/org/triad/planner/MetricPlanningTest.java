@@ -58,6 +58,51 @@ class MetricPlanningTest {
         assertTrue(shortest.length() < plan.length(), shortest.toPddl());
     }
 
+    /** The roads domain with a visitor the courier can escort along a road (at the road's length too). */
+    private static final String ESCORT_DOMAIN = """
+            (define (domain escort)
+              (:requirements :strips :typing :action-costs :negative-preconditions)
+              (:types place parcel visitor)
+              (:predicates (at ?p - place) (road ?a ?b - place) (parcel-at ?x - parcel ?p - place) (carries ?x - parcel)
+                (visitor-at ?v - visitor ?p - place) (followed ?v - visitor))
+              (:functions (length ?a ?b - place) (total-cost))
+              (:action move :parameters (?a ?b - place) :precondition (and (at ?a) (road ?a ?b))
+                :effect (and (not (at ?a)) (at ?b) (increase (total-cost) (length ?a ?b))))
+              (:action escort :parameters (?v - visitor ?a ?b - place) :precondition (and (at ?a) (visitor-at ?v ?a) (road ?a ?b) (not (followed ?v)))
+                :effect (and (not (at ?a)) (at ?b) (not (visitor-at ?v ?a)) (visitor-at ?v ?b) (increase (total-cost) (length ?a ?b))))
+              (:action follow :parameters (?v - visitor ?p - place) :precondition (and (at ?p) (visitor-at ?v ?p)) :effect (followed ?v))
+              (:action pick :parameters (?x - parcel ?p - place) :precondition (and (at ?p) (parcel-at ?x ?p))
+                :effect (and (not (parcel-at ?x ?p)) (carries ?x)))
+              (:action drop :parameters (?x - parcel ?p - place) :precondition (and (at ?p) (carries ?x))
+                :effect (and (not (carries ?x)) (parcel-at ?x ?p))))""";
+
+    private static String escortProblem(String goal) {
+        return """
+                (define (problem errand) (:domain escort)
+                  (:objects lobby store c1 ward - place gauze - parcel alice - visitor)
+                  (:init (at lobby) (parcel-at gauze store) (visitor-at alice lobby)
+                    (road lobby store) (road store lobby) (road store c1) (road c1 store) (road c1 ward) (road ward c1) (road store ward) (road ward store)
+                    (= (length lobby store) 5) (= (length store lobby) 5) (= (length store c1) 2.8) (= (length c1 store) 2.8)
+                    (= (length c1 ward) 3.2) (= (length ward c1) 3.2) (= (length store ward) 6) (= (length ward store) 6) (= (total-cost) 0))
+                  (:goal %s) (:metric minimize (total-cost)))""".formatted(goal);
+    }
+
+    @Test
+    void ofTheCheapestPlansTheOneOfFewestStepsIsTaken() {
+        Domain d = PddlParser.parseDomain(ESCORT_DOMAIN, "escort.pddl");
+        // store -> ward directly (6 m) and through c1 (2.8 + 3.2 m) are equally long: the direct road, one step less
+        Problem p = PddlParser.parseProblem(escortProblem("(parcel-at gauze ward)"), "errand.pddl");
+        PddlPlan plan = solve(d, p);
+        assertEquals(11, PlanValidator.metricValue(d, p, plan).getAsDouble(), 1e-9);
+        assertEquals(List.of(PddlStep.of("move", "lobby", "store"), PddlStep.of("pick", "gauze", "store"), PddlStep.of("move", "store", "ward"),
+                PddlStep.of("drop", "gauze", "ward")), plan.steps());
+        // a goal that needs the visitor: escorting her is the way
+        Problem visit = PddlParser.parseProblem(escortProblem("(and (parcel-at gauze ward) (visitor-at alice ward))"), "visit.pddl");
+        PddlPlan escorted = solve(d, visit);
+        assertEquals(11, PlanValidator.metricValue(d, visit, escorted).getAsDouble(), 1e-9);
+        assertEquals(4, escorted.length(), escorted.toPddl());
+    }
+
     @Test
     void aNumericMetricIsMinimised() {
         // the battery domain with a direct road of 70 m: fewest steps take it, least travelled the corridor (60 m)
