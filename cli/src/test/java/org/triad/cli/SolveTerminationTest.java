@@ -27,6 +27,7 @@ import org.junit.jupiter.params.provider.EnumSource;
  * parsing. Each input keeps the process in its phase for seconds of CPU, and the signal is sent only
  * once a thread dump ({@code jcmd PID Thread.print}) shows the phase's class on a stack, so the signal
  * arrives in that phase whatever the machine's load. No time is asserted beyond generous bounds.
+ * A {@code --timeout} that ends improvement gives the plan found so far, said so, with exit 0.
  */
 class SolveTerminationTest {
 	private static final String CLASS_PATH = System.getProperty("java.class.path");
@@ -123,6 +124,44 @@ class SolveTerminationTest {
 			p.destroyForcibly();
 			p.waitFor();
 		}
+	}
+
+	/**
+	 * {@code --timeout} reached while the goal agenda's plan of 250 balls is being improved: the process prints that plan
+	 * (valid), says on a {@code note:} line that it is the best found so far, exits 0 as documented, and ends within a
+	 * bound of its timeout. Its first plan costs about a tenth of the CPU its improvement does, so some timeout lies
+	 * between the two at any load: the test starts at 4 s and doubles the timeout while the time ran out before the first
+	 * plan (a slow or loaded machine), up to 128 s.
+	 */
+	@Test
+	void theTimeoutDuringImprovementGivesTheBestPlanSoFarAndExitZero() throws Exception {
+		Path[] files = input(Phase.IMPROVEMENT);
+		for (int timeout = 4; timeout <= 128; timeout *= 2) {
+			Process p = solve(files[0], files[1], Integer.toString(timeout));
+			try {
+				assertTrue(p.waitFor(timeout + 120, TimeUnit.SECONDS), "still running two minutes after its timeout of " + timeout + " s");
+				String out = Files.readString(dir.resolve("out.txt"));
+				if (out.startsWith("no plan: time limit of ")) {
+					assertEquals(1, p.exitValue(), out);
+					continue; // the time ran out before the first plan: more time
+				}
+				assertEquals(0, p.exitValue(), out);
+				List<String> lines = out.lines().toList();
+				List<String> notes = lines.stream().filter(l -> l.startsWith("note: ")).toList();
+				assertEquals(List.of("note: " + org.triad.planner.SolveResult.BEST_SO_FAR + " (a longer --timeout gives the same plan on every run)"),
+						notes, "a plan improved to the end, or another note, with a timeout of " + timeout + " s: " + lines.size() + " lines");
+				String plan = lines.stream().filter(l -> !l.startsWith("note: ")).collect(java.util.stream.Collectors.joining("\n"));
+				org.triad.planner.PddlPlan parsed = org.triad.planner.ExternalPlanner.parsePlan(plan);
+				assertTrue(parsed.length() >= 749, "250 balls take at least 749 steps: " + parsed.length());
+				assertTrue(org.triad.planner.PlanValidator.validate(org.triad.planner.pddl.PddlParser.parseDomain(files[0]),
+						org.triad.planner.pddl.PddlParser.parseProblem(files[1]), parsed).valid(), "the best plan so far is not valid");
+				return;
+			} finally {
+				p.destroyForcibly();
+				p.waitFor();
+			}
+		}
+		fail("no first plan within 128 s");
 	}
 
 	private Path[] input(Phase phase) throws IOException {

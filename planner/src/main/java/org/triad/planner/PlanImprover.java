@@ -88,6 +88,15 @@ final class PlanImprover {
 
     /** The shortest plan found, never longer than {@code plan} (a valid plan for the goal). */
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
+        return improve(init, goalPos, goalNeg, plan, tryLazyGreedy, false);
+    }
+
+    /**
+     * @param restartAnyway the restarts run even where the smallest neighbourhood did not help: the
+     *     first plan came from a search that has not been asked twice (the portfolio's), and a second
+     *     search finds another route where the first one's plan is a local optimum for neighbourhoods
+     */
+    int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy, boolean restartAnyway) {
         shortest = false;
         timedOut = false;
         improveStart = meter.now();
@@ -109,7 +118,7 @@ final class PlanImprover {
         // the first plan is likely short already and the rest of the budget is kept
         int beforeHood = best.length;
         best = neighbourhood(init, goalPos, goalNeg, best, workUntil, false);
-        if (shortest || best.length == first) return best;
+        if (shortest || (best.length == first && !restartAnyway)) return best;
         // larger neighbourhoods only where the smallest one helped (gripper: the lazy search's plan
         // is as short as Fast Downward's, and growing the neighbourhood around it spent the whole
         // budget for nothing), for half of what is left, so that the restarts get work too

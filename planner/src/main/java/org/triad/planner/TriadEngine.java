@@ -284,6 +284,7 @@ public final class TriadEngine implements PddlPlanner {
             plan = agenda(q, new BestFirstSearch(task, h, succ, deadline).limitWork(meter, meter.now() + AGENDA_WORK), h, open, effort);
             fromAgenda = plan != null;
         }
+        NegativeGoalCompilation compiledPlan = null;
         if (plan == null && System.nanoTime() < deadline) {
             long beforePortfolio = meter.now();
             NegativeGoalCompilation c = NegativeGoalCompilation.of(task, q.init(), q.goalPos(), q.goalNeg());
@@ -295,6 +296,7 @@ public final class TriadEngine implements PddlPlanner {
             }
             // the compiled plan is replayed on the task itself, which alone knows every effect and rule
             if (r != null && r.outcome() == BestFirstSearch.Outcome.FOUND && !solves(succ, q, r.plan())) r = null;
+            if (r != null) compiledPlan = c;
             if (r == null) {
                 FirstPlanPortfolio portfolio = new FirstPlanPortfolio(task, h, succ, deadline);
                 r = portfolio.run(q.init(), q.goalPos(), q.goalNeg(), effort);
@@ -322,11 +324,26 @@ public final class TriadEngine implements PddlPlanner {
             // half the cap, so that improving it does not double a long search (depot); without the
             // squared share, sokoban-sat11 p07's 119 portfolio steps got 0.35 s worth and ended at
             // 101 (93 with it; Fast Downward 77)
-            long budget = improvementBudget(improvementCap, firstPlan, plan.length, open.size(), fromAgenda);
+            // negative goals count as goals too (quantum-layout's are all negative: every gate done)
+            int goals = open.size();
+            for (int g : q.goalNeg()) if (Arrays.binarySearch(q.init(), g) >= 0) goals++;
+            long budget = improvementBudget(improvementCap, firstPlan, plan.length, goals, fromAgenda);
             long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
-                    open.size() <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
-            PlanImprover improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
-            plan = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda);
+                    goals <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
+            int[] improved;
+            PlanImprover improver;
+            if (compiledPlan != null) {
+                // improved where it was found: on the task itself the heuristics do not see negative
+                // goals, so the restarts would search blind (quantum-layout p07: 35 steps, 24 this way; Fast Downward 31)
+                NegativeGoalCompilation c = compiledPlan;
+                improver = new PlanImprover(c.task, new FfHeuristic(c.task), () -> new AdditiveFfHeuristic(c.task), new Successors(c.task),
+                        deadline, effort, evaluations, budget);
+                improved = improver.improve(c.init, c.goalPos, new int[0], plan, fromAgenda, goals > 1 && !fromAgenda);
+            } else {
+                improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
+                improved = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda, goals > 1 && !fromAgenda);
+            }
+            if (compiledPlan == null || solves(succ, q, improved)) plan = improved;
             bestSoFar = improver.timedOut();
         }
         if (minimizeCost && improvementCap > 0 && CostSearch.hasVaryingCosts(task)) {
