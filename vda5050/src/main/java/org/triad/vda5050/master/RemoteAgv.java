@@ -419,7 +419,7 @@ public final class RemoteAgv implements FailureExplaining {
             synchronized (lock) {
                 abandonedOrder = drive.orderId(); // it may still drive to its decision point: the next order waits for that
             }
-            if (mayStepAside && !down) {
+            if ((mayStepAside || drive.madeWay()) && !down) {
                 stepAsideAfter(drive, traffic);
             }
         }
@@ -432,7 +432,7 @@ public final class RemoteAgv implements FailureExplaining {
      * it went, and its caller re-plans from there.
      */
     private void stepAsideAfter(RouteDrive drive, TrafficControl traffic) {
-        if (drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
+        if (!drive.madeWay() && drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
             return;
         }
         String why;
@@ -443,9 +443,15 @@ public final class RemoteAgv implements FailureExplaining {
         String from = traffic.decisionPoint(name());
         Optional<String> side = traffic.aside(name());
         if (side.isEmpty()) {
+            // nowhere to go: one of the robots it would have waited for makes way instead
+            Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
+            synchronized (lock) {
+                lastFailure = why + other.map(o -> "; nowhere to step aside to, so " + o + " makes way").orElse("");
+            }
             return;
         }
-        traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of " + drive.refusal().get().cycle());
+        traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of "
+                + drive.refusal().map(r -> r.cycle().toString()).orElse("a robot refused as a deadlock"));
         boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false);
         synchronized (lock) {
             lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure);

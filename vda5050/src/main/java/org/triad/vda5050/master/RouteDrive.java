@@ -55,6 +55,8 @@ final class RouteDrive {
     private boolean strandedOnEdge;
     /** The drive ended at its decision point (refused, a wait over the bound, a door shut): the AGV drives on to it. */
     private boolean endedHere;
+    /** The drive ended to make way for a robot refused as a deadlock. */
+    private boolean madeWay;
     /** Traffic control's refusal that ended the drive, if one did. */
     private Refused refusal;
 
@@ -85,6 +87,11 @@ final class RouteDrive {
 
     String orderId() {
         return orderId;
+    }
+
+    /** Whether the drive ended to make way for another robot (it steps aside next). */
+    boolean madeWay() {
+        return madeWay;
     }
 
     /** The refusal that ended the drive (e.g. a deadlock avoided, naming the robots of the cycle), if one did. */
@@ -129,6 +136,11 @@ final class RouteDrive {
             if (shut.isPresent()) {
                 return endHere(shut.get());
             }
+        }
+        if (waiting && traffic.makeWay(robot)) {
+            waiting = false;
+            madeWay = true;
+            return endHere("traffic control: " + robot + " made way (a robot refused as a deadlock had nowhere to step aside to)");
         }
         Optional<Wait> late = traffic.overdue(robot);
         if (late.isPresent()) {

@@ -98,6 +98,34 @@ public final class TrafficControl {
         return stepAside;
     }
 
+    /** Robots asked to make way for a refused robot that had nowhere to go (see {@link #askToMakeWay}). */
+    private final java.util.Set<String> makingWay = new java.util.HashSet<>();
+
+    /**
+     * A robot refused as a deadlock has no free neighbour to step aside to: the first other robot of the cycle that
+     * waits and has one is asked to make way instead (its wait is withdrawn at its next state and it steps aside; see
+     * {@link #makeWay}). Returns that robot, if any.
+     */
+    synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
+        for (String w : cycle) {
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && aside(w).isPresent()) {
+                makingWay.add(w);
+                log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
+                return Optional.of(w);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** Whether the robot was asked to make way while it waits: its wait withdrawn (once). */
+    synchronized boolean makeWay(String robot) {
+        if (!makingWay.remove(robot) || table.waiting(robot).isEmpty()) {
+            return false;
+        }
+        deliver(table.cancel(robot));
+        return true;
+    }
+
     void note(String line) {
         log.accept(line);
     }
@@ -108,9 +136,10 @@ public final class TrafficControl {
     }
 
     /**
-     * A stop node next to the robot's decision point that it can step aside to now (the first by name): the node, the
-     * lane to it and the areas they lie in have room for it after everyone who holds or waits for them; never into the
-     * lift (a step aside is a plain drive).
+     * A stop node for one robot next to the robot's decision point that it can step aside to now (the first by name):
+     * the node, the lane to it and the areas they lie in have room for it after everyone who holds or waits for them;
+     * never into the lift (a step aside is a plain drive), nor into a hall for several (robots stepping aside into it
+     * would all drive to its one waypoint).
      */
     synchronized Optional<String> aside(String robot) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
@@ -118,8 +147,8 @@ public final class TrafficControl {
         }
         String at = table.decisionPoint(robot);
         for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
-            if (!table.map().isStop(n)) {
-                continue;
+            if (!table.map().isStop(n) || table.map().node(n).capacity() > 1) {
+                continue; // a hall for several (the lobby) has one waypoint, which all robots stepping aside into it would drive to
             }
             boolean free = true;
             for (Resource r : table.map().step(at, n)) {

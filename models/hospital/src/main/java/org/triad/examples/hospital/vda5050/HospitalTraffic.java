@@ -37,6 +37,10 @@ public final class HospitalTraffic {
     public static final int LIFT_CAPACITY = 1;
     /** The zone of the upper floor's places (its corridor waypoints and wards): one robot fewer than it has places. */
     public static final String UPPER_FLOOR = "floor1";
+    /** The prefix of the zone of a waypoint that another lane's way runs over (e.g. {@code passing-c0}). */
+    public static final String PASSING = "passing-";
+    /** Two couriers touch at 0.6 m between their centres: a lane passing nearer a waypoint than that passes through it. */
+    private static final double ROBOT_WIDTH = 0.6;
 
     private HospitalTraffic() {
     }
@@ -51,6 +55,7 @@ public final class HospitalTraffic {
         }
         Map<String, List<String>> doors = new LinkedHashMap<>();
         Map<String, List<String>> corridors = new LinkedHashMap<>();
+        Map<String, List<String>> passing = new LinkedHashMap<>();
         List<String> waypoints = floor.modelWaypoints();
         for (int i = 0; i < waypoints.size(); i++) {
             for (int j = i + 1; j < waypoints.size(); j++) {
@@ -66,8 +71,21 @@ public final class HospitalTraffic {
                     doors.computeIfAbsent(door, k -> new ArrayList<>()).add(edge);
                 }
                 corridorRoundCorners(floor.plan(), route.get()).ifPresent(c -> corridors.computeIfAbsent(c, k -> new ArrayList<>()).add(edge));
+                for (String w : waypoints) {
+                    if (!w.equals(a) && !w.equals(z) && passes(floor.plan(), route.get(), floor.plan().waypoint(w).position())) {
+                        passing.computeIfAbsent(w, k -> new ArrayList<>()).add(edge);
+                    }
+                }
             }
         }
+        // a lane whose way runs over another waypoint (the west corridor's c1-c4 over c0, the east one's c3-c6 over the
+        // lift's landing c7): a robot standing there blocks it, so the waypoint and the lane are one place for one robot,
+        // a zone (the waypoint stays a stop node: robots wait there for the pharmacy's door and the lift)
+        passing.forEach((w, edges) -> {
+            List<String> members = new ArrayList<>(List.of(w));
+            members.addAll(edges);
+            b.area(Kind.ZONE, PASSING + w, 1, members.toArray(String[]::new));
+        });
         // the ride: one edge between a lift's landings, driven as the AGV's edge action "ride"; it, the passages into and
         // out of the cabins and the cabins are the lift, for LIFT_CAPACITY robots, so robots queue for it in order and
         // nobody drives into a cabin another robot holds
@@ -118,6 +136,21 @@ public final class HospitalTraffic {
     public static List<String> keptDoors(HospitalFloor floor) {
         TrafficMap map = map(floor);
         return map.resources().stream().filter(r -> r.kind() == Kind.DOOR && !r.id().equals(HospitalFloor.FIRE_DOOR)).map(r -> r.id()).toList();
+    }
+
+    /** Whether the route's way (straight between its simulator waypoints) passes within a robot's width of {@code p}. */
+    private static boolean passes(FloorPlan plan, List<String> route, Vec2 p) {
+        for (int i = 1; i < route.size(); i++) {
+            Vec2 u = plan.waypoint(route.get(i - 1)).position();
+            Vec2 v = plan.waypoint(route.get(i)).position();
+            Vec2 d = v.minus(u);
+            double len2 = d.dot(d);
+            double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, p.minus(u).dot(d) / len2));
+            if (new Vec2(u.x() + t * d.x(), u.y() + t * d.y()).distance(p) < ROBOT_WIDTH) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The corridor the route's inner stretch (between its corner waypoints) runs through, if it has corners. */
