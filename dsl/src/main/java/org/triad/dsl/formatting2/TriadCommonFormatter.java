@@ -31,7 +31,7 @@ import org.triad.dsl.triad.SituationObject;
  * (but not a blank line between two consecutive line comments: Xtext's comment replacer joins them).
  */
 public class TriadCommonFormatter extends AbstractFormatter2 {
-	private static final Set<String> TIGHT_BEFORE = Set.of(";", ",", ")", ".", ":");
+	private static final Set<String> TIGHT_BEFORE = Set.of(";", ",", ")", ".", ":", "@pre");
 	private static final Set<String> TIGHT_AFTER = Set.of("(", ".", "!");
 	/** The house indentation; Xtext's default (a tab) counts as "not chosen by the editor". */
 	private static final String INDENTATION = "  ";
