@@ -136,7 +136,8 @@ public class TriadCommonFormatter extends AbstractFormatter2 {
 			document.append(prev, f -> f.oneSpace());
 		} else if ("}".equals(nextKw) || "{".equals(prevKw)) {
 			document.append(prev, f -> f.newLine());
-		} else if (nextKw != null && TIGHT_BEFORE.contains(nextKw) || prevKw != null && TIGHT_AFTER.contains(prevKw)) {
+		} else if (nextKw != null && TIGHT_BEFORE.contains(nextKw) || prevKw != null && TIGHT_AFTER.contains(prevKw)
+				|| "-".equals(prevKw) && prev.getSemanticElement() instanceof org.triad.dsl.triad.NegationExpression) {
 			document.append(prev, f -> f.noSpace());
 		} else if ("(".equals(nextKw)) {
 			document.append(prev, prevKw == null ? f -> f.noSpace() : f -> f.oneSpace());
