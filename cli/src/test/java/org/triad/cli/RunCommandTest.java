@@ -51,18 +51,23 @@ class RunCommandTest {
 
 	@Test
 	void impossibleGoalAbortsAfterExactlyFourPlanningAttemptsWithRemoteOperation() {
+		// the courier's moves drain its battery, so its first goal is planned with the rest of the task in view (a task
+		// does not strand its robot): the missing gauze is found before the courier drives to the storage
 		Result r = triad("run", HOSPITAL, "--state", "Shortage.state", "--task", "CollectAndDeliver(gauze, storage, ward1)");
 		assertEquals(1, r.code(), String.join("\n", r.lines()));
-		assertEquals(3, r.count("replanning Holds(gauze)"));
-		assertEquals(1, r.count("task CollectAndDeliver(gauze, storage, ward1) aborted at goal Holds(gauze): planning failed: no plan:"
-				+ " Holds(gauze) unreachable: Courier.carries(gauze) needs Building.itemAt(gauze, _): none in the current state,"
-				+ " and no action makes one from what can be reached"));
+		assertEquals(3, r.count("replanning IsAt(storage)"));
+		assertEquals(0, r.count("Courier.move"), "the courier did not move: " + r.lines());
+		assertEquals(1, r.count("task CollectAndDeliver(gauze, storage, ward1) aborted at goal IsAt(storage): planning failed:"
+				+ " Holds(gauze) unreachable after IsAt(storage) (no plan: Holds(gauze) unreachable: Courier.carries(gauze) needs"
+				+ " Building.itemAt(gauze, _): none in the current state, and no action makes one from what can be reached)"), r.lines().toString());
 		assertTrue(r.lines().get(r.lines().size() - 1).startsWith("remote operation requested for task CollectAndDeliver"), r.lines().toString());
 	}
 
 	@Test
 	void plannerIsChosenByConfiguration() {
-		Result pddl4j = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "Guide(alice, xray)", "--planner", "pddl4j");
+		// PDDL4J has no numeric fluents, so the hospital (its moves drain the battery) is no task for it: the logistics example is
+		Result pddl4j = triad("run", "../models/logistics/src/main/models", "--state", "Floor.state", "--task", "GoTo(office, library)",
+				"--planner", "pddl4j");
 		assertEquals(0, pddl4j.code(), String.join("\n", pddl4j.lines()) + pddl4j.err());
 		Result unknown = triad("run", HOSPITAL, "--state", "Morning.state", "--task", "Guide(alice, xray)", "--planner", "nope");
 		assertEquals(2, unknown.code());

@@ -124,6 +124,18 @@ public final class SchemaBuilder {
 		if (e instanceof NotExpression n) {
 			return new Expr.Not(expr(n.getOperand()));
 		}
+		if (e instanceof org.triad.dsl.triad.NegationExpression n) {
+			// a negative literal is a value (an attribute, a fact's argument); any other negation is '0 - x', which the
+			// planner's arithmetic already computes
+			if (n.getOperand() instanceof IntLiteral l) {
+				return new Expr.Lit(-l.getValue());
+			}
+			if (n.getOperand() instanceof DecimalLiteral l) {
+				return new Expr.Lit(-l.getValue());
+			}
+			boolean integral = TriadTypeSystem.typeOf(n.getOperand()).kind() == org.triad.dsl.typing.TriadType.Kind.INT;
+			return new Expr.Arith('-', new Expr.Lit(integral ? (Object) 0 : (Object) 0.0), expr(n.getOperand()));
+		}
 		if (e instanceof PropertyCall c) {
 			// 'p()@pre' needs no mark of its own: the runtime evaluates every effect's value in the state before the action
 			Actor actor = c.getActor() != null ? c.getActor() : org.eclipse.xtext.EcoreUtil2.getContainerOfType(c, Actor.class);

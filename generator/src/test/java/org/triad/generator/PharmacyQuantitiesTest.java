@@ -154,9 +154,9 @@ class PharmacyQuantitiesTest {
 		GoalSolver.Outcome o = new GoalSolver(schema).plan(first, List.of(second), flat);
 		assertNull(o.plan());
 		// the need is what the shortest trip draws with the battery plentiful: pharmacy - corridor - wardA, 10 + 10 m
-		assertTrue(o.failure().startsWith("Delivered(morphine, wardA) unreachable: Courier.battery() is 12.0 and the trip needs 20.0, "
-				+ "Courier.load() is 0"), o.failure());
-		assertTrue(o.failure().contains(" (no plan"), o.failure());
+		// the load is not named: more of it would not help
+		assertTrue(o.failure().startsWith("Delivered(morphine, wardA) unreachable: Courier.battery() is 12.0 and the trip needs 20.0 (no plan"),
+				o.failure());
 	}
 
 	@Test
@@ -168,7 +168,7 @@ class PharmacyQuantitiesTest {
 		assertNull(o.plan());
 		// the morphine weighs 3: with the limit plentiful it is delivered, and nothing draws the limit down
 		assertTrue(o.failure().contains("Floor.limit() is 2 and the trip needs more"), o.failure());
-		assertTrue(o.failure().contains("Courier.battery() is 100.0,"), o.failure());
+		assertFalse(o.failure().contains("Courier.battery()"), "a full battery is not what stands in the way: " + o.failure());
 	}
 
 	@Test

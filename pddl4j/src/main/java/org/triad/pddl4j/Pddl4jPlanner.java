@@ -65,8 +65,12 @@ public final class Pddl4jPlanner implements PddlPlanner {
     @Override
     public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
         Domain plain = withoutCosts(domain);
-        if (plain != domain && !org.triad.planner.pddl.NumericParts.isNumeric(plain)
-                && !org.triad.planner.pddl.NumericParts.isNumeric(problem.goal())) {
+        String numbers = numbers(plain, problem);
+        if (!numbers.isEmpty()) {
+            return SolveResult.error("PDDL4J 3.8.3 has no numeric fluents, and this task computes with " + numbers
+                    + ": plan it with the triad engine (--planner triad) or a numeric planner such as Metric-FF");
+        }
+        if (plain != domain) {
             domain = plain;
             problem = new Problem(problem.name(), problem.domainName(), problem.objects(), problem.init(), List.of(), problem.goal(), null);
         }
@@ -99,6 +103,18 @@ public final class Pddl4jPlanner implements PddlPlanner {
                 dir.toFile().delete();
             }
         }
+    }
+
+    /** The fluents the task's conditions and effects compute with, beyond action costs ({@code (courier-battery)}), or "". */
+    private static String numbers(Domain d, Problem p) {
+        java.util.Set<String> names = new java.util.TreeSet<>();
+        for (org.triad.planner.pddl.Action a : d.actions()) {
+            org.triad.planner.pddl.NumericParts.fluents(a).forEach(f -> names.add("(" + f.name() + ")"));
+        }
+        if (org.triad.planner.pddl.NumericParts.isNumeric(p.goal())) {
+            names.add("numbers in the goal");
+        }
+        return String.join(", ", names);
     }
 
     /**

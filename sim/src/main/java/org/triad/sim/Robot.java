@@ -454,6 +454,13 @@ public final class Robot extends Agent {
         return Steering.avoid(this, desired, sim.agents(), partner, false).velocity();
     }
 
+    /** The cabin carried the robot by (dx, dy) to another floor: that is no driving, and draws nothing from its battery. */
+    void carried(double dx, double dy) {
+        if (lastPosition != null) {
+            lastPosition = new Vec2(lastPosition.x() + dx, lastPosition.y() + dy);
+        }
+    }
+
     @Override
     void afterStep() {
         super.afterStep();

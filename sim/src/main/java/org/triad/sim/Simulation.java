@@ -471,6 +471,9 @@ public final class Simulation {
             if (from.contains(a.position())) {
                 a.body.translate(dx, dy);
                 a.body.setLinearVelocity(0, 0);
+                if (a instanceof Robot r) {
+                    r.carried(dx, dy);
+                }
             }
         }
     }

@@ -31,7 +31,7 @@ import org.triad.dsl.triad.SituationObject;
  * (but not a blank line between two consecutive line comments: Xtext's comment replacer joins them).
  */
 public class TriadCommonFormatter extends AbstractFormatter2 {
-	private static final Set<String> TIGHT_BEFORE = Set.of(";", ",", ")", ".", ":");
+	private static final Set<String> TIGHT_BEFORE = Set.of(";", ",", ")", ".", ":", "@pre");
 	private static final Set<String> TIGHT_AFTER = Set.of("(", ".", "!");
 	/** The house indentation; Xtext's default (a tab) counts as "not chosen by the editor". */
 	private static final String INDENTATION = "  ";
@@ -136,7 +136,8 @@ public class TriadCommonFormatter extends AbstractFormatter2 {
 			document.append(prev, f -> f.oneSpace());
 		} else if ("}".equals(nextKw) || "{".equals(prevKw)) {
 			document.append(prev, f -> f.newLine());
-		} else if (nextKw != null && TIGHT_BEFORE.contains(nextKw) || prevKw != null && TIGHT_AFTER.contains(prevKw)) {
+		} else if (nextKw != null && TIGHT_BEFORE.contains(nextKw) || prevKw != null && TIGHT_AFTER.contains(prevKw)
+				|| "-".equals(prevKw) && prev.getSemanticElement() instanceof org.triad.dsl.triad.NegationExpression) {
 			document.append(prev, f -> f.noSpace());
 		} else if ("(".equals(nextKw)) {
 			document.append(prev, prevKw == null ? f -> f.noSpace() : f -> f.oneSpace());

@@ -21,7 +21,8 @@ import org.triad.dsl.triad.Expression;
  * error recovery then skips the rest of the too-deep part like any syntax error.
  * <p>
  * Nesting counts calls of the rule {@code Expression} from inside an expression (parentheses, call
- * arguments) and of {@code Not} from {@code Not} (each {@code !} after the first). Operator chains
+ * arguments), of {@code Not} from {@code Not} (each {@code !} after the first) and of {@code Unary} from {@code Unary}
+ * (each {@code -} after the first). Operator chains
  * are measured as the height of the tree built so far, which the actions
  * {@code {BinaryExpression.left=current}} extend by one on top of their left operand.
  */
@@ -47,7 +48,7 @@ final class ExpressionDepthGuard {
 			ExpressionTooDeepException tooDeep = new ExpressionTooDeepException(input, "the expression nests more than "
 					+ ExpressionLimits.MAX_NESTING + " levels of parentheses, negations and call arguments");
 			// a parenthesis or call that gives up never matches its closing parenthesis: it goes with the skipped part
-			skipRestOfExpression(!caller.equals("Not"));
+			skipRestOfExpression(!caller.equals("Not") && !caller.equals("Unary"));
 			throw ExpressionDepthGuard.<RuntimeException>unchecked(tooDeep);
 		}
 		calls.push(nests);
@@ -100,6 +101,7 @@ final class ExpressionDepthGuard {
 			boolean nests = switch (rule.getName()) {
 				case "Expression" -> caller.equals("Primary") || caller.equals("Reference");
 				case "Not" -> caller.equals("Not");
+				case "Unary" -> caller.equals("Unary"); // - - - x: each '-' after the first, as '!'
 				default -> false;
 			};
 			return nests ? caller : "";

@@ -36,6 +36,10 @@ public final class ConstantArithmetic {
 		if (e instanceof DecimalLiteral l) {
 			return new Folded(l.getValue(), false, false);
 		}
+		if (e instanceof org.triad.dsl.triad.NegationExpression n) {
+			Folded f = fold(n.getOperand());
+			return f.isConstant() ? new Folded(-f.value(), false, false, f.integral()) : f;
+		}
 		if (!(e instanceof BinaryExpression b) || !TriadTypeSystem.isArithmetic(b.getOperator())) {
 			return Folded.NOT_CONSTANT;
 		}

@@ -94,15 +94,16 @@ public final class Postconditions {
 		}
 	}
 
-	/** Whether an expression is a plain value: a parameter or object, a literal, or an enumeration literal. */
+	/** Whether an expression is a plain value: a parameter or object, a literal (a negative number too), or an enumeration literal. */
 	public static boolean isValue(Expression e) {
 		return e instanceof ValueRef || e instanceof IntLiteral || e instanceof DecimalLiteral || e instanceof StringLiteral
-				|| e instanceof BooleanLiteral || e instanceof EnumLiteralRef;
+				|| e instanceof BooleanLiteral || e instanceof EnumLiteralRef
+				|| e instanceof org.triad.dsl.triad.NegationExpression n && (n.getOperand() instanceof IntLiteral || n.getOperand() instanceof DecimalLiteral);
 	}
 
 	/** A number computed from values before the action: arithmetic, or a property read ({@code p()@pre}). */
 	public static boolean isArithmeticValue(Expression e) {
-		return e instanceof PropertyCall || e instanceof BinaryExpression b && TriadTypeSystem.isArithmetic(b.getOperator());
+		return e instanceof PropertyCall || TriadTypeSystem.isArithmetic(e);
 	}
 
 	private static boolean isNumber(PropertyCall call) {

@@ -83,9 +83,9 @@ public final class Quantities {
 		List<BinaryExpression> comparisons = new ArrayList<>();
 		for (Expression root : all) {
 			for (EObject o : iterable(root)) {
-				if (o instanceof BinaryExpression b && TriadTypeSystem.isArithmetic(b.getOperator())
-						&& !(b.eContainer() instanceof BinaryExpression outer && TriadTypeSystem.isArithmetic(outer.getOperator()))) {
-					addCalls(leaves(b));
+				if (o instanceof Expression a && TriadTypeSystem.isArithmetic(a)
+						&& !(a.eContainer() instanceof Expression outer && TriadTypeSystem.isArithmetic(outer))) {
+					addCalls(leaves(a));
 				} else if (o instanceof BinaryExpression b && isComparison(b.getOperator())) {
 					comparisons.add(b);
 				}
@@ -139,6 +139,8 @@ public final class Quantities {
 		if (e instanceof BinaryExpression b && TriadTypeSystem.isArithmetic(b.getOperator())) {
 			collectLeaves(b.getLeft(), out);
 			collectLeaves(b.getRight(), out);
+		} else if (e instanceof org.triad.dsl.triad.NegationExpression n) {
+			collectLeaves(n.getOperand(), out);
 		} else if (e != null) {
 			out.add(e);
 		}

@@ -57,6 +57,10 @@ public final class TriadTypeSystem {
 			return l.kind() == TriadType.Kind.INT && r.kind() == TriadType.Kind.INT && b.getOperator() != BinaryOperator.DIVIDE
 					? TriadType.INT : TriadType.DOUBLE;
 		}
+		if (e instanceof org.triad.dsl.triad.NegationExpression n) {
+			TriadType t = typeOf(n.getOperand());
+			return t.isNumeric() ? t : TriadType.UNKNOWN; // a non-number is reported once, at the '-' (expr.not-numeric)
+		}
 		if (e instanceof BinaryExpression || e instanceof NotExpression || e instanceof BooleanLiteral) {
 			return TriadType.BOOLEAN;
 		}
@@ -85,6 +89,11 @@ public final class TriadTypeSystem {
 			}
 		}
 		return TriadType.UNKNOWN;
+	}
+
+	/** Whether an expression is arithmetic: {@code + - * /} on two numbers, or a number negated ({@code -x}). */
+	public static boolean isArithmetic(Expression e) {
+		return e instanceof BinaryExpression b && isArithmetic(b.getOperator()) || e instanceof org.triad.dsl.triad.NegationExpression;
 	}
 
 	/** Whether an operator is arithmetic ({@code + - * /}) rather than a comparison or connective. */

@@ -101,6 +101,19 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 		}
 	}
 
+	/** {@code -x} negates a number; a literal's negation is checked like other arithmetic on literals. */
+	@Check
+	public void checkNegation(org.triad.dsl.triad.NegationExpression e) {
+		TriadType t = TriadTypeSystem.typeOf(e.getOperand());
+		if (!t.isNumeric()) {
+			if (!t.isUnknown()) {
+				error("'" + sourceText(e.getOperand()) + "' is " + article(t.display()) + " " + t.display() + ": '-' negates numbers (int or double)"
+						+ (t.isBoolean() ? "; '!' negates a condition" : ""), e, P.getNegationExpression_Operand(), CommonIssueCodes.NOT_NUMERIC);
+			}
+		}
+		// no overflow of its own: an int literal is at most 2147483647, and -2147483647 is an int
+	}
+
 	private static final java.util.Map<org.triad.dsl.triad.BinaryOperator, String> ARITHMETIC_VERB = java.util.Map.of(
 			org.triad.dsl.triad.BinaryOperator.PLUS, "adds", org.triad.dsl.triad.BinaryOperator.MINUS, "subtracts",
 			org.triad.dsl.triad.BinaryOperator.TIMES, "multiplies", org.triad.dsl.triad.BinaryOperator.DIVIDE, "divides");
@@ -140,7 +153,9 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 				continue;
 			}
 			for (int i = 0; i < call.getArguments().size(); i++) {
-				if (call.getArguments().get(i) instanceof BinaryExpression arithmetic && TriadTypeSystem.isArithmetic(arithmetic.getOperator())) {
+				Expression argument = call.getArguments().get(i);
+				if (TriadTypeSystem.isArithmetic(argument) && !Postconditions.isValue(argument)) {
+					Expression arithmetic = argument;
 					error("'" + sourceText(arithmetic) + "' is computed by arithmetic and cannot be the argument of '" + call.getProperty().getName()
 							+ "': the planner passes objects and values as arguments; compare the number instead", call,
 							P.getPropertyCall_Arguments(), i, CommonIssueCodes.QUANTITY_AS_ARGUMENT);

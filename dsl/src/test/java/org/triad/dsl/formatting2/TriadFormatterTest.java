@@ -83,14 +83,14 @@ class TriadFormatterTest {
 				domain Shop;
 
 				goal At(Place p, Box b) {
-				  Bot.loc() == p && !(World.boxAt(b, p) || Bot.charge() >= 0.5)
+				  Bot.loc() == p && !(World.boxAt(b, p) || Bot.charge() >= 0.5 || -Bot.charge() < -(1 - 0.5))
 				}
 
 				goal Same() {
 				  Bot.handEmpty()
 				}
 				""", format("goal", """
-				domain Shop; goal At(Place p,Box b){Bot.loc()==p&&!(World.boxAt(b,p)||Bot.charge()>=0.5)} goal Same(){Bot.handEmpty()}
+				domain Shop; goal At(Place p,Box b){Bot.loc()==p&&!(World.boxAt(b,p)||Bot.charge()>=0.5||- Bot.charge()<-( 1-0.5))} goal Same(){Bot.handEmpty()}
 				"""));
 		assertEquals("""
 				domain Shop;

@@ -10,6 +10,7 @@ import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
 import org.triad.planner.PddlStep;
 import org.triad.planner.SolveResult;
+import org.triad.planner.UnreachableGoal;
 import org.triad.planner.PddlPlanner;
 import org.triad.planner.TriadEngine;
 
@@ -78,9 +79,14 @@ public final class GoalSolver {
 				ActionCosts.Costed costed = ActionCosts.apply(task, costs);
 				result = planner.solve(costed.domain(), costed.problem(), timeout);
 			}
-			if (!result.unreachable().isEmpty()) {
+			List<UnreachableGoal> unreachable = result.unreachable();
+			if (unreachable.isEmpty() && result.status() == SolveResult.Status.UNSOLVABLE && !task.domain().functions().isEmpty()) {
+				// the numeric search says only that nothing reaches the goal: the facts, numbers left out, say what is missing
+				unreachable = planner.solve(FactsOnly.domain(task.domain()), FactsOnly.problem(task.problem()), timeout).unreachable();
+			}
+			if (!unreachable.isEmpty()) {
 				return new Outcome(null, "no plan: " + new UnreachableGoalText(schema, task.names())
-						.describe(UnreachableGoalText.goalLabel(goal, binding), result.unreachable()));
+						.describe(UnreachableGoalText.goalLabel(goal, binding), unreachable));
 			}
 			if (!result.isSolved()) {
 				return new Outcome(null, switch (result.status()) {
@@ -114,7 +120,9 @@ public final class GoalSolver {
 			return first;
 		}
 		if (!first.planned()) {
-			return new Outcome(null, goal.describe() + " unreachable: " + needs(goal, from) + "(" + first.failure() + ")");
+			String needs = needs(goal, from);
+			// no quantity in the way: the failure names the facts that are missing, and says it all
+			return new Outcome(null, needs.isEmpty() ? first.failure() : goal.describe() + " unreachable: " + needs + "(" + first.failure() + ")");
 		}
 		if (then.isEmpty()) {
 			return first;
@@ -159,7 +167,8 @@ public final class GoalSolver {
 			if (!m.isSatisfiedIn(state)) {
 				Outcome o = plan(next.name(), next.args(), state);
 				if (!o.planned()) {
-					return next.describe() + " unreachable: " + needs(next, state) + "after " + previous.describe() + " (" + o.failure() + ")";
+					String needs = needs(next, state);
+					return next.describe() + " unreachable" + (needs.isEmpty() ? " " : ": " + needs) + "after " + previous.describe() + " (" + o.failure() + ")";
 				}
 				for (var a : o.plan().actions()) {
 					state = transitions.apply(a, state);
@@ -174,14 +183,15 @@ public final class GoalSolver {
 	static final double PLENTY = 1e6;
 
 	/**
-	 * The quantities without arguments (a battery, a load) in a state, as the models name them, each with what
-	 * reaching {@code goal} needs of it where that can be measured: {@code Courier.battery() is 12.0 and the trip
-	 * needs 30.0 }. The need is measured on a plan for the goal from the same state with only that quantity
-	 * made plentiful ({@link #PLENTY}): how far that plan draws it down (the least value along the plan, below
-	 * the plentiful start; quantities are separated by commas). Plans are of least cost, so with moves costing
-	 * their length it is what the shortest trip draws, an upper bound on the least need. A quantity the plan
-	 * does not draw down (a payload limit) that the goal is reachable with more of gets "and the trip needs
-	 * more"; one whose plenty does not help is named with its value only.
+	 * The quantities without arguments (a battery, a load limit) in a state that stand in the way of {@code goal},
+	 * as the models name them, each with what reaching the goal needs of it: {@code Courier.battery() is 12.0 and
+	 * the trip needs 30.0 }. The need is measured on a plan for the goal from the same state with only that
+	 * quantity made plentiful ({@link #PLENTY}): how far that plan draws it down (the least value along the plan,
+	 * below the plentiful start; quantities are separated by commas). Plans are of least cost, so with moves
+	 * costing their length it is what the shortest trip draws, an upper bound on the least need. A quantity the
+	 * plan does not draw down (a payload limit) gets "and the trip needs more". A quantity whose plenty does not
+	 * help (the load, a drain per metre, a battery where an item is missing) is left out; when none helps, this is
+	 * "" and the planner's reason (the facts missing) is the whole story.
 	 */
 	private String needs(GoalInstance goal, State state) {
 		List<String> parts = new ArrayList<>();
@@ -191,7 +201,7 @@ public final class GoalSolver {
 				continue;
 			}
 			StringBuilder b = new StringBuilder();
-			b.append(atom.actor()).append('.').append(atom.property()).append("() is ").append(value);
+			b.append(atom.actor()).append('.').append(atom.property()).append("() is ").append(number(value.doubleValue(), value instanceof Integer));
 			State plenty = state.toBuilder().value(atom, value instanceof Integer ? (Object) (int) PLENTY : (Object) PLENTY).build();
 			Outcome o = plan(goal.name(), goal.args(), plenty);
 			if (o.planned()) {
@@ -208,8 +218,8 @@ public final class GoalSolver {
 				} else {
 					b.append(" and the trip needs more");
 				}
+				parts.add(b.toString());
 			}
-			parts.add(b.toString());
 		}
 		return parts.isEmpty() ? "" : String.join(", ", parts) + " ";
 	}

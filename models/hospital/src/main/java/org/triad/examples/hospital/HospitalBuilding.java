@@ -21,8 +21,8 @@ import org.triad.sim.Vec2;
  * The simulated hospital as one building: one dyn4j simulation of the models' floor with its people and items and
  * many couriers, each with its own {@code IRobot}/{@code IWorld} implementation ({@link Courier}) over the shared
  * world. An item one courier picked up is gone for the others; couriers meet in the corridors and block each
- * other. Each courier has a {@link org.triad.sim.Battery} (the simulation's defaults: 50 J per metre driven, 360 kJ
- * full) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
+ * other. Each courier has a {@link org.triad.sim.Battery} ({@link HospitalObjects#courierBattery()}: 0.5 % of a full
+ * charge per metre driven, the models' {@code Courier.drain()}) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
  * in one row along the walls of the lobby (19 spots, each with a clear way out: see {@link #LOBBY_SPOTS}), then in two
  * columns along the walls of ward 3, ward 2, storage, x-ray and ward 1 (24 spots a room).
  *
@@ -83,6 +83,7 @@ public final class HospitalBuilding {
                     // someone stands there: the next spot
                 }
             }
+            robot.setBattery(HospitalObjects.courierBattery());
             PlatformLog log = new PlatformLog();
             SimulatedCourier actor = new SimulatedCourier(floor, objects, sim, robot, whereabouts, log);
             couriers.put(name, new Courier(name, robot, actor, new SimulatedBuilding(floor, objects, sim, actor, whereabouts, log), log));

@@ -19,6 +19,22 @@ import generated.hospital.domain.WayPoint;
 public final class HospitalObjects {
     /** The most a courier may carry, kg (the models' {@code Courier.payload()}, the factsheet's {@code maxLoadMass}). */
     public static final int PAYLOAD_KG = 5;
+    /**
+     * What a metre driven takes of a courier's battery, percent of a full one: the models' {@code Courier.drain()}
+     * (the situations state it), and what the simulated couriers' batteries drain ({@link #courierBattery()}). A
+     * small battery, 200 m from full to empty, so that the hospital's floor (about 40 m across) draws it down
+     * visibly and a day's deliveries need the dock.
+     */
+    public static final double DRAIN_PERCENT_PER_METRE = 0.5;
+    /** Traction energy per metre driven, J/m (the simulation's default). */
+    private static final double JOULES_PER_METRE = 50;
+    /** Charging power at the dock, W (the simulation's default): 20 s from empty to full. */
+    private static final double CHARGING_WATTS = 500;
+
+    /** A full battery of a simulated courier: {@value #JOULES_PER_METRE} J/m, so {@value #DRAIN_PERCENT_PER_METRE} % per metre. */
+    public static org.triad.sim.Battery courierBattery() {
+        return new org.triad.sim.Battery(JOULES_PER_METRE * 100 / DRAIN_PERCENT_PER_METRE, JOULES_PER_METRE, CHARGING_WATTS, 1);
+    }
 
     private final Map<String, WayPoint> wayPoints = new LinkedHashMap<>();
     private final Map<String, Room> rooms = new LinkedHashMap<>();

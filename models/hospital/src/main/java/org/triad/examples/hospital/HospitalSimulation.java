@@ -59,6 +59,7 @@ public final class HospitalSimulation {
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
         floor.equip(sim);
         Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, RobotSpec.defaults());
+        robot.setBattery(HospitalObjects.courierBattery());
         // the models' dock (Building.dock(lobby)), where the courier charges
         sim.addDock(HospitalBuilding.DOCK, floor.plan().waypoint(HospitalBuilding.DOCK).position());
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,

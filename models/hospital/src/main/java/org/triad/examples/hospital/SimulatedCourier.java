@@ -162,6 +162,13 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
         return robot.battery().percent();
     }
 
+    /** What a metre driven takes of the simulated battery, percent (the models' drain; {@link HospitalObjects#courierBattery()}). */
+    @Override
+    public double drain() {
+        Battery b = robot.battery();
+        return 100 * b.joulesPerMetre() / b.capacityJoules();
+    }
+
     /** The most it may carry, kg ({@link HospitalObjects#PAYLOAD_KG}). */
     @Override
     public int payload() {

@@ -25,16 +25,28 @@ class HospitalDemoTest {
 		List<String> lines = Arrays.asList(out.toString().split("\\R"));
 		assertEquals(0, code, out + err.toString());
 		assertTrue(lines.contains("[   0.0 s] task CollectAndDeliver(gauze, storage, ward1) started"), out::toString);
-		assertTrue(lines.contains("[  25.5 s] action Courier.move(c1, storage) succeeded; robot (4.00, 17.88) at storage, battery 99.7 %"), out::toString);
+		assertTrue(lines.contains("[  25.5 s] action Courier.move(c1, storage) succeeded; robot (4.00, 17.88) at storage, battery 89.6 %"), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
 		assertTrue(lines.contains("gauze is now in ward1"), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("action Building.ride(lift, c7, d1) succeeded")), out::toString);
+		// the cabin carries the courier between floors: the battery pays only for driving in and out (the models' ride drains nothing)
+		double before = battery(lines, "Building.ride(lift, c7, d1) started");
+		double after = battery(lines, "action Building.ride(lift, c7, d1) succeeded");
+		assertTrue(before - after < 3, before + " % before the ride, " + after + " % after it");
 		assertTrue(lines.stream().anyMatch(l -> l.startsWith("Completed: insulin is now in ward4")), out::toString);
 		assertTrue(lines.contains("Pictures written to " + dir.toAbsolutePath().normalize() + ":"), out::toString);
 		for (String picture : List.of("delivery.png", "delivery.gif", "delivery.html")) {
 			assertTrue(Files.size(dir.resolve(picture)) > 1000, picture);
 		}
+	}
+
+	/** The battery the first line containing {@code marker} reports ({@code ..., battery 61.8 %}). */
+	private static double battery(List<String> lines, String marker) {
+		String line = lines.stream().filter(l -> l.contains(marker)).findFirst().orElseThrow(() -> new AssertionError("no line " + marker));
+		java.util.regex.Matcher m = java.util.regex.Pattern.compile("battery ([0-9.]+) %").matcher(line);
+		assertTrue(m.find(), line);
+		return Double.parseDouble(m.group(1));
 	}
 
 	@Test

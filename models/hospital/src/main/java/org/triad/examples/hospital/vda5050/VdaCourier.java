@@ -97,6 +97,15 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return s.batteryState().batteryCharge();
     }
 
+    /**
+     * What a metre driven takes of the battery, percent: VDA 5050 reports the charge, not the drain, so the hospital's
+     * AGVs' ({@link HospitalObjects#DRAIN_PERCENT_PER_METRE}, what the simulated AGV drains).
+     */
+    @Override
+    public double drain() {
+        return HospitalObjects.DRAIN_PERCENT_PER_METRE;
+    }
+
     /** The factsheet's {@code maxLoadMass}, kg. */
     @Override
     public int payload() {

@@ -58,7 +58,8 @@ class OneBuildingTest {
             // courier-2 parked off the dock (courier-1 started on it, at the lobby's waypoint, and charged meanwhile)
             AgvState s2 = two.state().orElseThrow();
             double charge = s2.batteryState().batteryCharge();
-            assertTrue(charge < 40 && charge > 39, "started at 40 %, drove some 50 m at 50 J/m of 360 kJ: " + charge);
+            // lobby - c6 - storage is 53 m in the models (and a few more from its parking spot): 0.5 % a metre
+            assertTrue(charge < 40 - 0.5 * 53 + 0.5 && charge > 40 - 0.5 * 65, "started at 40 %, drove some 55 m at 0.5 % per metre: " + charge);
             assertFalse(s2.batteryState().charging());
             building.stop();
             assertTrue(building.output().matches("(?s).*building: [0-9.]+ s simulated in [0-9.]+ s \\([0-9.]+x real time\\), CPU [0-9.]+ s.*"),
