@@ -52,6 +52,13 @@ public final class FleetService implements AutoCloseable {
     private static final ObjectMapper JSON = new ObjectMapper();
     /** A robot on which this many tasks in a row aborted is taken out of dispatch until the operator puts it back. */
     public static final int ABORTS_IN_A_ROW = 3;
+    /**
+     * How traffic control words a task's end that is the building's congestion, not the robot's fault (vda5050
+     * {@code RemoteAgv}/{@code RouteDrive}: a wait for another robot beyond the bound, a drive refused to avoid a
+     * deadlock): such an abort does not count toward {@link #ABORTS_IN_A_ROW}, or a jam would take every healthy robot
+     * in it out of dispatch (service/BENCHMARK.md, the mixed benchmark under traffic control).
+     */
+    static final List<String> CONGESTION = List.of("(the wait bound)", "refused by traffic control: deadlock avoided");
 
     private final TaskCatalog catalog;
     private final TaskStore store;
@@ -990,6 +997,9 @@ public final class FleetService implements AutoCloseable {
      * why it was taken out, or null; call with the lock held.
      */
     private String takeOutIfFailing(RobotLane lane, long taskId, String reason) {
+        if (congestion(reason)) {
+            return null; // neither the robot's fault nor its success: the count stays where it was
+        }
         int inARow = lane.aborted();
         if (inARow >= ABORTS_IN_A_ROW && lane.online()) {
             String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: " + reason
@@ -998,6 +1008,11 @@ public final class FleetService implements AutoCloseable {
             return why;
         }
         return null;
+    }
+
+    /** Whether an abort's reason is the building's congestion ({@link #CONGESTION}), which does not count against the robot. */
+    static boolean congestion(String reason) {
+        return reason != null && CONGESTION.stream().anyMatch(reason::contains);
     }
 
     /** Ends a queued task without executing it, for {@code reason}; call with the lock held. */

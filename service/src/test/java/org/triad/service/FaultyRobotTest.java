@@ -55,4 +55,18 @@ class FaultyRobotTest {
         assertTrue(robot("dry-1").get("online").asBoolean(), "the operator puts it back");
         assertTrue(robot("dry-1").get("offlineReason").isNull());
     }
+
+    /** Traffic control's words for a jam (as the mixed benchmark's aborts gave them) do not count against the robot; a fault does. */
+    @Test
+    void anAbortThatIsTheBuildingsCongestionDoesNotCountAgainstTheRobot() {
+        assertTrue(FleetService.congestion("task GoTo(xray) aborted at goal IsAt(xray): action Courier.move(lobby, c4) failed: the platform"
+                + " reported failure: drive lobby -> c4 failed on AGV triad/courier-5: triad/courier-5 waits at lobby for node 'c4' (held by"
+                + " or promised to triad/courier-2) for more than 120.0 s (the wait bound)"));
+        assertTrue(FleetService.congestion("action Courier.move(c6, c3) failed: the platform reported failure: drive c6 -> c3 on AGV"
+                + " triad/courier-8 refused by traffic control: deadlock avoided: triad/courier-8 would wait for triad/courier-4 (node 'c3')"));
+        assertFalse(FleetService.congestion("action Courier.move(c4, c5) failed: the platform reported failure: PATH_BLOCKED"));
+        assertFalse(FleetService.congestion("drive c4 -> c5 on AGV triad/courier-1 refused by traffic control: the robot stands at 'c1' on the traffic map"),
+                "a robot the traffic map has elsewhere is the robot's own trouble");
+        assertFalse(FleetService.congestion("injected failure 1 of 1000 (fail=move*1000)"));
+    }
 }

@@ -27,9 +27,10 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * aborted/refused with the reasons), picks per item against completed deliveries (an object delivered
  * twice would show as more picks than deliveries), tasks per simulated hour, the dispatcher's time per
  * dispatch (median, p99) and the CPU seconds of broker, building and service. Arguments:
- * {@code [robots=10] [tasks=200] [speed=10] [mix=all|moves] [models=models/hospital/src/main/models]} ({@code moves}: patrols and
+ * {@code [robots=10] [tasks=200] [speed=10] [mix=all|moves] [models=models/hospital/src/main/models] [minutes=30]} ({@code moves}: patrols and
  * trips only, for couriers that each have a simulation of their own, where items and people are not shared); see service/BENCHMARK.md.
- * It stops waiting when every robot is out of dispatch (3 aborts in a row each) and reports the rest as queued.
+ * It stops waiting when every robot is out of dispatch (3 aborts in a row each), or after {@code minutes} of wall time
+ * (a fleet that jams does neither), and reports the rest as queued or running.
  */
 public final class BuildingBenchmark {
     private static final ObjectMapper JSON = new ObjectMapper();
@@ -46,6 +47,7 @@ public final class BuildingBenchmark {
         double speed = args.length > 2 ? Double.parseDouble(args[2]) : 10;
         boolean movesOnly = args.length > 3 && args[3].equals("moves");
         Path models = Path.of(args.length > 4 ? args[4] : "models/hospital/src/main/models");
+        long minutes = args.length > 5 ? Long.parseLong(args[5]) : 30;
         Path dir = Files.createTempDirectory("triad-building-benchmark");
         System.out.printf(Locale.ROOT, "building benchmark: %d robots, %d tasks, %.0fx real time; %d cores, Java %s%n", robots, tasks, speed,
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
@@ -74,7 +76,7 @@ public final class BuildingBenchmark {
                     ids.add(s.fleet().submit(task(movesOnly ? 2 + i % 2 : i, itemAt)).id());
                 }
                 Map<Long, TaskView> ended = new TreeMap<>();
-                long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(30);
+                long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(minutes);
                 while (ended.size() < ids.size() && System.nanoTime() < end) {
                     for (long id : ids) {
                         if (!ended.containsKey(id)) {
