@@ -557,7 +557,9 @@ final class NumericHeuristic {
         long[] c = new long[no];
         for (int o = 0; o < no; o++) {
             java.util.TreeSet<Integer> a = new java.util.TreeSet<>();
-            for (NumericTask.Effects e : task.ops.get(o).effects()) for (int f : e.adds()) a.add(f);
+            // an instance the search leaves out adds nothing here: the bound is the reduced task's, whose
+            // cheapest plans cost what the whole task's do (NumericDominatedOps)
+            if (task.leftOut == null || !task.leftOut[o]) for (NumericTask.Effects e : task.ops.get(o).effects()) for (int f : e.adds()) a.add(f);
             adds[o] = a.stream().mapToInt(Integer::intValue).toArray();
             c[o] = own[o] > 0 ? (long) Math.floor(Math.min(own[o], LmCut.INFINITE / 1e9) * LmCut.SCALE) : 0;
         }
