@@ -525,53 +525,12 @@ final class NumericHeuristic {
     private final java.util.Map<BitSet, Double> costBounds = new java.util.HashMap<>();
     private static final int CACHED_BOUNDS = 500_000;
 
-    /**
-     * LM-cut over the facts (comparisons and effect conditions taken as true): at least h_max, and on a
-     * delivery the way to the item plus the way on, so the exact search's A* proves far fewer states.
-     */
     private double computeLowerBound(BitSet facts, boolean unit) {
-        LmCut lm = unit ? unitCut() : costCut();
-        long v = lm.value(facts, lowerBoundGoals());
-        if (v >= LmCut.INFINITE) return Double.POSITIVE_INFINITY;
-        return v / LmCut.SCALE;
-    }
-
-    private LmCut unitCut;
-    private LmCut costCut;
-    private int[] lowerBoundGoals;
-
-    private LmCut unitCut() {
-        if (unitCut == null) unitCut = lmCut(unitCosts());
-        return unitCut;
-    }
-
-    private LmCut costCut() {
-        if (costCut == null) costCut = lmCut(opCost);
-        return costCut;
-    }
-
-    /** Costs rounded down to LM-cut's integer units, so that its sums stay below the true costs. */
-    private LmCut lmCut(double[] own) {
-        int no = task.ops.size();
-        int[][] adds = new int[no][];
-        long[] c = new long[no];
-        for (int o = 0; o < no; o++) {
-            java.util.TreeSet<Integer> a = new java.util.TreeSet<>();
-            for (NumericTask.Effects e : task.ops.get(o).effects()) for (int f : e.adds()) a.add(f);
-            adds[o] = a.stream().mapToInt(Integer::intValue).toArray();
-            c[o] = own[o] > 0 ? (long) Math.floor(Math.min(own[o], LmCut.INFINITE / 1e9) * LmCut.SCALE) : 0;
-        }
-        return new LmCut(task.factNames.size(), preFacts, adds, c);
-    }
-
-    /** The goal's top-level positive facts, the ones the bound counts. */
-    private int[] lowerBoundGoals() {
-        if (lowerBoundGoals == null) {
-            java.util.TreeSet<Integer> g = new java.util.TreeSet<>();
-            for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) g.add(f.id());
-            lowerBoundGoals = g.stream().mapToInt(Integer::intValue).toArray();
-        }
-        return lowerBoundGoals;
+        double[] own = unit ? unitCosts() : opCost;
+        double[] fcost = factCosts(facts, null, own, true);
+        double h = 0;
+        for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h = Math.max(h, fcost[f.id()]);
+        return h;
     }
 
     private double[] unitCosts;

@@ -141,6 +141,7 @@ final class NumericSearch {
         }
         double groundMs = (System.nanoTime() - start) / 1e6;
         long searchStart = System.nanoTime();
+        task.leftOut = NumericDominatedOps.of(task);
         NumericHeuristic h = new NumericHeuristic(task);
         BitSet initFacts = new BitSet();
         task.initFacts.forEach(initFacts::set);
@@ -537,6 +538,10 @@ final class NumericSearch {
             int[] anchor = new int[task.ops.size()];
             List<Integer> free = new ArrayList<>();
             for (int o = 0; o < anchor.length; o++) {
+                if (task.leftOut != null && task.leftOut[o]) {
+                    anchor[o] = -2; // never a successor
+                    continue;
+                }
                 anchor[o] = anchorOf(task.ops.get(o).pre());
                 if (anchor[o] < 0) free.add(o);
                 else count[anchor[o]]++;

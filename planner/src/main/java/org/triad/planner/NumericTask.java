@@ -85,6 +85,11 @@ final class NumericTask {
     boolean[] accumulator;
     /** Per fluent, how much the metric grows when the fluent grows by one (0 for fluents it does not read linearly). */
     double[] metricWeight;
+    /**
+     * Instances the search leaves out ({@link NumericDominatedOps}: a kept one does all they do that
+     * matters), null for none; set by the search, read by its successor index and admissible bound.
+     */
+    boolean[] leftOut;
 
     private final Map<String, Integer> factIds = new HashMap<>();
     private final Map<String, Integer> fluentIds = new LinkedHashMap<>();

@@ -29,6 +29,19 @@ class LmCutTest {
         assertEquals(0, lm.value(new int[] { 2, 4 }, new int[] { 4 }));
     }
 
+    /**
+     * An operator costlier than the goal's h^max can still be the way in: two goals at 10 each
+     * separately, or both at once through x (11, then free). A cut that leaves out the operator from x
+     * (h^max stopped at the goal's value) is no landmark, and the sum was 20; every cut must see it: 11.
+     */
+    @Test
+    void anOperatorBeyondTheGoalsValueIsInTheCut() {
+        int[][] pre = { { 0 }, { 0 }, { 0 }, { 3 } };
+        int[][] add = { { 1 }, { 2 }, { 3 }, { 1, 2 } };
+        long[] cost = { 10, 10, 11, 0 };
+        assertEquals(11, new LmCut(4, pre, add, cost).value(new int[] { 0 }, new int[] { 1, 2 }));
+    }
+
     @Test
     void anUnreachableGoalIsInfinite() {
         int[][] add = ADD.clone();
