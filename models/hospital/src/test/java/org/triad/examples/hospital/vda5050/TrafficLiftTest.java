@@ -47,6 +47,12 @@ class TrafficLiftTest {
             assertEquals(HospitalTraffic.LIFT_CAPACITY, lift.capacity());
             int upper = traffic.read(t -> t.map().area(HospitalTraffic.UPPER_FLOOR).orElseThrow().capacity());
             assertEquals(3, upper, "the upper floor's four places (d1, d2, ward 4, ward 5) admit three robots");
+            // the east corridor's lane c3-c6 runs over the landing c7: a robot waiting for the lift there blocks it
+            Resource passingC7 = traffic.read(t -> t.map().area(HospitalTraffic.PASSING + "c7").orElseThrow());
+            assertEquals(1, passingC7.capacity());
+            boolean laneAndLanding = traffic.read(t -> t.map().areasOf(t.map().edge("c3", "c6").orElseThrow()).contains(passingC7)
+                    && t.map().areasOf(t.map().node("c7")).contains(passingC7) && t.map().isStop("c7"));
+            assertTrue(laneAndLanding, "the lane c3-c6 and the landing c7 are one place for one robot, where robots may still wait");
 
             assertTrue(one.driveRoute(List.of("lobby", "c4", "c5", "c6", "c7"), traffic), one.lastFailure() + "\n" + log);
             assertTrue(two.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), two.lastFailure() + "\n" + log);
