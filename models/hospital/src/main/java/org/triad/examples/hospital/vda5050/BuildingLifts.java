@@ -24,8 +24,9 @@ import org.triad.vda5050.devices.DeviceMessages.LiftState;
  * A request that comes while the cabin travels elsewhere waits for it to stop, then is served (in the order they
  * came); so does a request to leave while another robot stands in the cabin (it does not carry off a robot that did
  * not ask, unless that robot stays longer than {@value #DWELL_SECONDS} simulated seconds), and a cabin that has just
- * opened at a floor holds its door open {@value #HOLD_SECONDS} simulated seconds before it serves the next request, so
- * that the robot it came for can drive in before a robot queued elsewhere calls it away. The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
+ * serving a request is kept for it until it stood open at the request's floor {@value #HOLD_SECONDS} simulated seconds
+ * (requests that come meanwhile wait), so that the robot it came for sees it open and can drive in before a robot
+ * queued elsewhere calls it away. The lift's state is published (retained) when a request is served and whenever the cabin's motion, floor or
  * door changes, naming the request it last acted on; a lift stopped between floors reports FAULT with the reason, and
  * every request that comes then is answered FAULT with it.
  */
@@ -44,6 +45,13 @@ public final class BuildingLifts {
     private final Map<String, Deque<Waiting>> waiting = new LinkedHashMap<>();
     /** When each lift's cabin last stood open at a floor (simulated seconds). */
     private final Map<String, Double> openedAt = new LinkedHashMap<>();
+    /**
+     * The lifts serving a request whose cabin has not yet stood open at its floor: nothing else is served meanwhile, or
+     * a request that comes while the cabin arrives (or while its door opens) would call it away before its robot saw it
+     * open. Since when (simulated seconds); a cabin that does not stand open within {@value #DWELL_SECONDS} s is not
+     * kept longer (its door may be held by something in its way).
+     */
+    private final Map<String, Double> arriving = new LinkedHashMap<>();
 
     private BuildingLifts(DeviceLink link) {
         this.link = link;
@@ -82,7 +90,7 @@ public final class BuildingLifts {
             return;
         }
         boolean elsewhere = l.motion() == Lift.Motion.MOVING && !Integer.valueOf(r.destinationFloor()).equals(l.destinationFloor().orElse(null));
-        if (elsewhere || !waiting.get(name).isEmpty() || leavesSomeoneBehind(s, l, r)) {
+        if (elsewhere || !waiting.get(name).isEmpty() || held(s, l) || leavesSomeoneBehind(s, l, r)) {
             waiting.get(name).add(new Waiting(r, s.time()));
             return;
         }
@@ -92,14 +100,38 @@ public final class BuildingLifts {
     private void serve(Simulation s, Lift l, LiftRequest r) {
         lastRequest.put(l.name(), r.requestId());
         Optional<String> refused = s.requestLift(l.name(), r.destinationFloor());
+        if (refused.isEmpty()) {
+            arriving.put(l.name(), s.time());
+            openedIfSo(s, l);
+        }
         publish(s, l, refused.orElse(null));
+    }
+
+    /** Whether the cabin is kept for the request it serves: not yet open at its floor, or open there for less than the hold. */
+    private boolean held(Simulation s, Lift l) {
+        return l.motion() == Lift.Motion.STOPPED
+                && (s.time() - arriving.getOrDefault(l.name(), -DWELL_SECONDS) < DWELL_SECONDS || s.time() - openedAt.getOrDefault(l.name(), -HOLD_SECONDS) < HOLD_SECONDS);
+    }
+
+    /** Notes the cabin standing open at a floor: the hold for its robot starts now. */
+    private void openedIfSo(Simulation s, Lift l) {
+        LiftState now = state(s, l, null);
+        if (DeviceMessages.STOPPED.equals(now.motionState()) && DeviceMessages.OPEN.equals(now.doorMode()) && arriving.remove(l.name()) != null) {
+            openedAt.put(l.name(), s.time());
+        }
     }
 
     /** Runs on the clock thread after every step: serves a waiting request once the cabin stopped; publishes changes. */
     private void step(Simulation s) {
         for (Lift l : s.lifts()) {
             Deque<Waiting> q = waiting.get(l.name());
-            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING && s.time() - openedAt.getOrDefault(l.name(), -HOLD_SECONDS) >= HOLD_SECONDS
+            openedIfSo(s, l);
+            if (l.motion() == Lift.Motion.FAULT) {
+                arriving.remove(l.name());
+            } else if (l.motion() == Lift.Motion.MOVING && arriving.containsKey(l.name())) {
+                arriving.put(l.name(), s.time()); // the wait for the door counts from the arrival, however long the ride
+            }
+            while (q != null && !q.isEmpty() && l.motion() != Lift.Motion.MOVING && !held(s, l)
                     && (!leavesSomeoneBehind(s, l, q.peek().request()) || s.time() - q.peek().since() >= DWELL_SECONDS)) {
                 serve(s, l, q.poll().request());
             }
@@ -107,9 +139,6 @@ public final class BuildingLifts {
             LiftState last = published.get(l.name());
             if (last == null || !Objects.equals(now.motionState(), last.motionState()) || !Objects.equals(now.currentFloor(), last.currentFloor())
                     || !Objects.equals(now.doorMode(), last.doorMode())) {
-                if (DeviceMessages.STOPPED.equals(now.motionState()) && DeviceMessages.OPEN.equals(now.doorMode())) {
-                    openedAt.put(l.name(), s.time());
-                }
                 publish(s, l, null);
             }
         }
