@@ -238,6 +238,11 @@ public final class ReservationTable {
         if (r.capacity() < 2) {
             return true;
         }
+        return takenByOthers(r, robot) + 2 <= r.capacity();
+    }
+
+    /** The places of {@code r} that robots other than {@code robot} hold or are queued for. */
+    private int takenByOthers(Resource r, String robot) {
         int taken = 0;
         for (String h : holders(r)) {
             if (!h.equals(robot)) {
@@ -249,7 +254,7 @@ public final class ReservationTable {
                 taken++;
             }
         }
-        return taken + 2 <= r.capacity();
+        return taken;
     }
 
     /**
@@ -262,18 +267,7 @@ public final class ReservationTable {
             return false;
         }
         Resource r = map.node(node);
-        int taken = 0;
-        for (String h : holders(r)) {
-            if (!h.equals(robot)) {
-                taken++;
-            }
-        }
-        for (Request w : queue.values()) {
-            if (w.needed.contains(r) && !w.robot.equals(robot)) {
-                taken++;
-            }
-        }
-        return taken + 1 > r.capacity();
+        return takenByOthers(r, robot) + 1 > r.capacity();
     }
 
     /** Whether {@code node} lies on the robot's base (behind or at its decision point): where it may drive. */
