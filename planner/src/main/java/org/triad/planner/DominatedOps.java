@@ -104,7 +104,7 @@ final class DominatedOps {
     }
 
     /** Whether sorted {@code a} is contained in sorted {@code b}. */
-    private static boolean subset(int[] a, int[] b) {
+    static boolean subset(int[] a, int[] b) {
         int j = 0;
         for (int x : a) {
             while (j < b.length && b[j] < x) j++;

@@ -140,21 +140,11 @@ final class NumericDominatedOps {
 
     private static boolean dominates(Shape d, Shape o, int[] needTrue, int[] needFalse) {
         if (!d.numeric.equals(o.numeric)) return false;
-        if (!subset(d.preTrue, o.preTrue) || !subset(d.preFalse, o.preFalse) || !subset(d.adds, o.adds) || !subset(d.dels, o.dels)) return false;
+        if (!DominatedOps.subset(d.preTrue, o.preTrue) || !DominatedOps.subset(d.preFalse, o.preFalse) || !DominatedOps.subset(d.adds, o.adds)
+                || !DominatedOps.subset(d.dels, o.dels)) return false;
         if (!o.other.containsAll(d.other)) return false;
         for (int a : o.adds) if (needTrue[a] > 0 && Arrays.binarySearch(d.adds, a) < 0) return false;
         for (int x : o.dels) if (needFalse[x] > 0 && Arrays.binarySearch(d.dels, x) < 0) return false;
-        return true;
-    }
-
-    /** Whether sorted {@code a} is contained in sorted {@code b}. */
-    private static boolean subset(int[] a, int[] b) {
-        int j = 0;
-        for (int x : a) {
-            while (j < b.length && b[j] < x) j++;
-            if (j == b.length || b[j] != x) return false;
-            j++;
-        }
         return true;
     }
 }
