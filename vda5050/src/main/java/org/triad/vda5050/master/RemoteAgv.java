@@ -72,6 +72,8 @@ public final class RemoteAgv implements FailureExplaining {
     private long orderToFirstState = -1;
     /** An order this master gave up on (silence, a broken connection, a timeout) that the AGV may still be running. */
     private String abandonedOrder;
+    /** A drive whose call ended at its decision point while the AGV still drives there: its nodes are still reported. */
+    private RouteDrive trailing;
     /** The traffic control the AGV last drove under (it stands on its map), or null. */
     private TrafficControl traffic;
     /** Whether a {@link #driveRoute} call runs (it tells traffic control of a lost connection itself). */
@@ -342,7 +344,15 @@ public final class RemoteAgv implements FailureExplaining {
         awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
         boolean idle;
         String at;
+        AgvState last;
         synchronized (lock) {
+            last = state;
+        }
+        if (last != null) {
+            trail(last); // what it passed on its way there is reported before it asks again
+        }
+        synchronized (lock) {
+            trailing = null;
             idle = state != null && state.nodeStates().isEmpty() && state.edgeStates().isEmpty() && !state.driving();
             at = state == null ? null : state.lastNodeId();
         }
@@ -416,8 +426,14 @@ public final class RemoteAgv implements FailureExplaining {
                 down = connection == ConnectionState.CONNECTIONBROKEN || connection == ConnectionState.OFFLINE;
             }
             drive.abandon(down);
+            AgvState now;
             synchronized (lock) {
                 abandonedOrder = drive.orderId(); // it may still drive to its decision point: the next order waits for that
+                trailing = down ? null : drive;
+                now = state;
+            }
+            if (now != null) {
+                trail(now);
             }
             if ((mayStepAside || drive.madeWay()) && !down) {
                 stepAsideAfter(drive, traffic);
@@ -658,15 +674,21 @@ public final class RemoteAgv implements FailureExplaining {
                 return;
             }
         }
-        synchronized (lock) {
-            if (h instanceof AgvState s) {
+        if (h instanceof AgvState s) {
+            synchronized (lock) {
                 // a duplicate (QoS 1) or an older state overtaken by a newer one; a restarted AGV says ONLINE first
                 if (!screen.accept(s)) {
                     return;
                 }
                 state = s;
                 stateNanos = System.nanoTime();
-            } else if (h instanceof Connection c) {
+                lock.notifyAll();
+            }
+            trail(s); // outside the lock: traffic control has its own
+            return;
+        }
+        synchronized (lock) {
+            if (h instanceof Connection c) {
                 connection = c.connectionState();
                 connectionNanos = System.nanoTime();
                 if (connection == ConnectionState.ONLINE) {
@@ -676,6 +698,21 @@ public final class RemoteAgv implements FailureExplaining {
                 }
             }
             lock.notifyAll();
+        }
+    }
+
+    /** Reports the nodes the AGV passes on its way to the decision point of a drive whose call ended there (see {@link RouteDrive#trail}). */
+    private void trail(AgvState s) {
+        RouteDrive t;
+        synchronized (lock) {
+            t = trailing;
+        }
+        if (t != null && t.trail(s)) {
+            synchronized (lock) {
+                if (trailing == t) {
+                    trailing = null;
+                }
+            }
         }
     }
 

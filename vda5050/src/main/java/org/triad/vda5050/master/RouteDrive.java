@@ -212,6 +212,31 @@ final class RouteDrive {
         }
     }
 
+    /**
+     * After the call ended at its decision point ({@link #endHere}) the AGV still drives there: the nodes it reports on
+     * the way are passed on to traffic control as before, so that what lies behind it is released. Without this the
+     * robot stood at its decision point still holding the nodes behind it (up to its whole last stretch), and a robot
+     * waiting for one of them waited for it with no edge in the wait-for graph (the table takes a robot to hold only its
+     * decision point once stopped): four couriers stood in a ring that deadlock avoidance did not see. True once there
+     * is nothing more to report (the AGV at its decision point, or on another order).
+     */
+    synchronized boolean trail(AgvState s) {
+        if (!endedHere || passed >= baseEnd) {
+            return true;
+        }
+        if (!orderId.equals(s.orderId())) {
+            return true;
+        }
+        int at = s.lastNodeSequenceId() / 2;
+        if (s.lastNodeSequenceId() % 2 == 0 && at <= baseEnd && at < route.size() && route.get(at).equals(s.lastNodeId()) && at > passed) {
+            for (int i = passed + 1; i <= at; i++) {
+                traffic.passedIfReleased(robot, route.get(i));
+            }
+            passed = at;
+        }
+        return passed >= baseEnd || s.nodeStates().isEmpty() && s.edgeStates().isEmpty() && !s.driving();
+    }
+
     /** Asks for further stretches while the robot is in its last granted one; a reason when refused. */
     private Optional<String> askAhead() {
         while (!waiting && baseEnd < route.size() - 1 && stretchEnds.stream().filter(e -> e > passed).count() <= 1) {

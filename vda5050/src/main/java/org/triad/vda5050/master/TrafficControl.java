@@ -211,14 +211,20 @@ public final class TrafficControl {
     /**
      * The robot stands idle at {@code node} of its base, short of its decision point (its last drive failed and the
      * AGV stopped before it): its base ends there from now on, what lay beyond freed, so that it can start again
-     * from where it stands. False when {@code node} is not on its base (the map does not know where it is) or while
-     * it waits for a stretch.
+     * from where it stands. At its decision point, what lies behind it on its base is released (its last call may have
+     * ended before the AGV reported passing it). False when {@code node} is not on its base (the map does not know
+     * where it is) or while it waits for a stretch.
      */
     synchronized boolean relocate(String robot, String node) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
             return place(robot, node);
         }
         if (table.decisionPoint(robot).equals(node)) {
+            // it stands at its decision point: what lies behind on its base (not reported passed, say after its last call
+            // ended there) is free, or robots waiting for it would wait for a robot the wait-for graph does not see
+            if (table.waiting(robot).isEmpty() && table.base(robot).size() > 1) {
+                deliver(table.passed(robot, node));
+            }
             return true;
         }
         if (table.waiting(robot).isPresent() || !table.released(robot, node)) {
@@ -255,6 +261,13 @@ public final class TrafficControl {
 
     synchronized void passed(String robot, String node) {
         deliver(table.passed(robot, node));
+    }
+
+    /** As {@link #passed}, unless the node is no longer on the robot's base (it was lost or taken away meanwhile). */
+    synchronized void passedIfReleased(String robot, String node) {
+        if (table.robots().contains(robot) && !table.isLost(robot) && table.released(robot, node)) {
+            deliver(table.passed(robot, node));
+        }
     }
 
     /** The decision the table made for this robot since it last asked, if any. */

@@ -1,0 +1,105 @@
+package org.triad.vda5050.master;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.junit.jupiter.api.Test;
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Messages.Edge;
+import org.triad.vda5050.protocol.Messages.EdgeState;
+import org.triad.vda5050.protocol.Messages.Node;
+import org.triad.vda5050.protocol.Messages.NodeState;
+
+/**
+ * {@link RouteDrive} and {@link TrafficControl} without a broker: the states an AGV would send are fed to the drive as
+ * master control feeds them, the orders it sends are recorded. Fast, and exact about the order of events.
+ */
+class RouteDriveTest {
+    /** A ring of four nodes for one robot each: a - b - c - d - a, every node a stop node. */
+    private static TrafficMap ring() {
+        return TrafficMap.builder().node("a").node("b").node("c").node("d").edge("a", "b").edge("b", "c").edge("c", "d").edge("d", "a").build();
+    }
+
+    private record Sent(String orderId, int updateId, List<Node> nodes, List<Edge> edges) {
+    }
+
+    private static AgvState state(String orderId, String lastNode, int lastSeq, boolean driving) {
+        return new AgvState(0, "2026-01-01T00:00:00.00Z", "2.1.0", "triad", "a", orderId, 0, null, lastNode, lastSeq,
+                driving ? List.of(new NodeState("x", lastSeq + 2, null, null, true)) : List.of(),
+                driving ? List.of(new EdgeState("e", lastSeq + 1, null, true)) : List.of(), null, null, null, driving, null, null, null,
+                List.of(), null, "AUTOMATIC", List.of(), null, null);
+    }
+
+    /**
+     * The gridlock the fleet's benchmark found (couriers 4, 8, 2, 5 each waiting for the next one's node, every 120 s the
+     * same waits): a call that ended at its decision point (a wait over the bound) left the robot holding the node it
+     * came from, which nobody reported it passed, and a robot waiting for that node had no edge in the wait-for graph
+     * (the table takes a stopped robot to hold its decision point only). A waits for B, B for C, C for A's old node: a
+     * cycle deadlock avoidance did not see. The AGV's states after the call ended are now reported, and the old node is
+     * freed as it reaches its decision point.
+     */
+    @Test
+    void aCallEndedAtItsDecisionPointKeepsItsBaseUpToThereAndReleasesWhatLiesBehindAsTheAgvGetsThere() throws InterruptedException {
+        TrafficControl traffic = new TrafficControl(ring(), 0.2, line -> { });
+        assertTrue(traffic.place("A", "d"));
+        assertTrue(traffic.place("B", "b"));
+        assertTrue(traffic.place("C", "c"));
+        List<Sent> orders = new ArrayList<>();
+        RouteDrive drive = new RouteDrive("A", List.of("d", "a", "b"), "o1", traffic, (id, u, n, e) -> orders.add(new Sent(id, u, n, e)),
+                why -> { });
+        assertTrue(drive.start().isEmpty());
+        assertEquals(List.of("d", "a"), traffic.read(t -> t.base("A")), "granted up to the stop node a; b (B's) asked for ahead");
+        assertTrue(traffic.read(t -> t.waiting("A")).isPresent());
+        // B waits for C (at its decision point), C waits for d: held by A, which is on its way to a
+        assertFalse(traffic.read(t -> t.request("B", List.of("b", "c"))) instanceof Granted);
+        assertFalse(traffic.read(t -> t.request("C", List.of("c", "d"))) instanceof Granted);
+        assertEquals(Set.of(), traffic.read(t -> t.waitsFor().get("C")),
+                "C waits for d, but A will not hold d once at its decision point: no edge C -> A, no cycle (A -> B -> C) refused");
+
+        // A's wait for b goes over the bound while it drives d -> a: its call ends at its decision point a
+        RouteDrive.Verdict v = RouteDrive.Verdict.RUNNING;
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        while (v.failure() == null && System.nanoTime() < deadline) {
+            v = drive.onState(state("o1", "d", 0, true));
+            Thread.sleep(20);
+        }
+        assertNotNull(v.failure(), "the wait over the bound ends the call");
+        assertTrue(v.failure().contains("the wait bound"), v.failure());
+        Sent last = orders.get(orders.size() - 1);
+        assertEquals(List.of("a"), last.nodes().stream().map(Node::nodeId).toList(), "the order now ends at the decision point");
+        drive.abandon(false);
+        assertEquals(List.of("d", "a"), traffic.read(t -> t.base("A")), "the AGV still drives to a: its base stays reserved up to there");
+        assertTrue(traffic.read(t -> t.waiting("A")).isEmpty(), "its wait is withdrawn");
+
+        // the AGV reaches a and stops: reported, d is freed and C is granted it
+        assertFalse(drive.trail(state("o1", "d", 0, true)), "still on its way");
+        assertTrue(drive.trail(state("o1", "a", 2, false)));
+        assertEquals(List.of("a"), traffic.read(t -> t.base("A")));
+        assertInstanceOf(Granted.class, traffic.take("C").orElseThrow(), "C was waiting for d, which A no longer holds");
+    }
+
+    @Test
+    void aRobotIdleAtItsDecisionPointWhosePassingWasNotReportedIsReleasedBehindWhenItStartsAgain() {
+        TrafficControl traffic = new TrafficControl(ring(), 60, line -> { });
+        assertTrue(traffic.place("A", "d"));
+        assertTrue(traffic.place("C", "c"));
+        RouteDrive drive = new RouteDrive("A", List.of("d", "a"), "o1", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(drive.start().isEmpty());
+        assertFalse(traffic.read(t -> t.request("C", List.of("c", "d"))) instanceof Granted);
+        // the call was given up on (no state reported a) but the AGV stands idle at a, its decision point
+        assertTrue(traffic.relocate("A", "a"));
+        assertEquals(List.of("a"), traffic.read(t -> t.base("A")));
+        assertInstanceOf(Granted.class, traffic.take("C").orElseThrow());
+        assertEquals(Map.of(), traffic.read(t -> t.waitsFor()));
+    }
+}
