@@ -219,8 +219,17 @@ final class CostSearch {
         PriorityQueue<long[]> open = new PriorityQueue<>((a, b) -> a[0] != b[0] ? Long.compare(a[0], b[0])
                 : a[1] != b[1] ? Long.compare(a[1], b[1]) : Long.compare(a[2], b[2]));
         long lmWork = lm.work();
-        long h0 = lm.value(r.initial(init), goals);
-        if (h0 >= LmCut.INFINITE) return new Optimal(null, true);
+        // the initial state's bound counts against the budget like every other: on a large task one
+        // LM-cut alone can outlast it, and then the search is unproven here, at the same work on every run
+        long h0 = lm.value(r.initial(init), goals, lmWork + Math.max(0, workEnd - work));
+        if (h0 >= LmCut.INFINITE) {
+            work += lm.work() - lmWork;
+            return new Optimal(null, true);
+        }
+        if (lm.stopped()) {
+            work += lm.work() - lmWork;
+            return new Optimal(null, false);
+        }
         states.add(init);
         gCost[0] = 0;
         gSteps[0] = 0;
@@ -270,7 +279,7 @@ final class CostSearch {
                     n = old;
                     h = fCost[n] - gCost[n]; // the bound depends on the state only
                 } else {
-                    h = lm.value(r.initial(next), goals);
+                    h = lm.value(r.initial(next), goals, lmWork + Math.max(0, workEnd - work)); // a weaker bound if stopped; the loop then ends
                     if (h >= LmCut.INFINITE) {
                         seen.put(key, -1);
                         continue;

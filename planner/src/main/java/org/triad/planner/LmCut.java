@@ -111,11 +111,29 @@ final class LmCut {
         return work;
     }
 
+    /** Whether the last {@link #value} stopped on its work limit before the goal cost nothing (its bound is then weaker). */
+    boolean stopped() {
+        return stopped;
+    }
+
+    private boolean stopped;
+
     /**
      * The bound from the facts {@code state} (each below {@code numFacts}) to {@code goals}, in scaled
      * units, or {@link #INFINITE} when the goals are out of reach even without deletes.
      */
     long value(int[] state, int[] goals) {
+        return value(state, goals, Long.MAX_VALUE);
+    }
+
+    /**
+     * The same, stopping after the round in which {@link #work} reaches {@code workEnd}: the cuts
+     * found so far still add up to a lower bound (each round's is a landmark under the costs it left),
+     * only a weaker one; {@link #stopped} then says so. A bound on work, not time, so a budget that
+     * ends here ends at the same place on every run.
+     */
+    long value(int[] state, int[] goals, long workEnd) {
+        stopped = false;
         pre[count - 1] = goals;
         System.arraycopy(baseCost, 0, cost, 0, count);
         cost[count - 1] = 0;
@@ -123,6 +141,10 @@ final class LmCut {
         if (g >= INFINITE) return INFINITE;
         long h = 0;
         while (g > 0) {
+            if (work >= workEnd) {
+                stopped = true;
+                return h;
+            }
             long m = cut(state);
             if (m <= 0 || m >= INFINITE) return h; // cannot happen with positive h^max; stop safely
             h += m;

@@ -30,27 +30,60 @@ final class NumericDominatedOps {
     private static final int MAX_OPS = 20_000;
     private static final int MAX_CANDIDATES = 64;
 
+    /** The number of the empty multiset of numeric effects. */
+    private static final int NO_NUMERIC = -1;
+
     private NumericDominatedOps() { }
 
-    /** An instance flattened: top-level fact conjuncts, other conjuncts, merged effects. */
-    private record Shape(int[] preTrue, int[] preFalse, List<NumericTask.Cond> other, int[] adds, int[] dels, Map<NumericTask.NumEffect, Integer> numeric) { }
+    /**
+     * An instance flattened: top-level fact conjuncts, other conjuncts, merged effects; {@code numeric}
+     * numbers the instance's multiset of numeric effects (equal numbers, equal effects), so comparing
+     * two instances' effects is comparing two ints.
+     */
+    private record Shape(int[] preTrue, int[] preFalse, List<NumericTask.Cond> other, int[] adds, int[] dels, int numeric) { }
+
+    /**
+     * What the analysis reads of the instances alone, computed once per grounding and kept with it
+     * ({@link NumericGroundingCache}): each instance's shape (null: nested, always kept) and the
+     * instances adding each fact. {@link #NONE} when the analysis does not apply (too many instances,
+     * conditional effects).
+     */
+    static final class Shapes {
+        static final Shapes NONE = new Shapes(null, null);
+        private final Shape[] shapes;
+        private final int[][] addOf;
+
+        private Shapes(Shape[] shapes, int[][] addOf) {
+            this.shapes = shapes;
+            this.addOf = addOf;
+        }
+
+        static Shapes of(NumericTask task) {
+            int no = task.ops.size();
+            if (no > MAX_OPS) return NONE;
+            for (NumericTask.Op op : task.ops) for (NumericTask.Effects e : op.effects()) if (e.when() != NumericTask.TRUE) return NONE;
+            Shape[] shapes = new Shape[no];
+            Map<Map<NumericTask.NumEffect, Integer>, Integer> numbering = new HashMap<>();
+            for (int o = 0; o < no; o++) shapes[o] = shape(task.ops.get(o), numbering);
+            int nf = task.factNames.size();
+            int[] count = new int[nf];
+            for (Shape s : shapes) if (s != null) for (int a : s.adds) count[a]++;
+            int[][] addOf = new int[nf][];
+            for (int f = 0; f < nf; f++) addOf[f] = new int[count[f]];
+            Arrays.fill(count, 0);
+            for (int o = 0; o < no; o++) if (shapes[o] != null) for (int a : shapes[o].adds) addOf[a][count[a]++] = o;
+            return new Shapes(shapes, addOf);
+        }
+    }
 
     /** Per instance, whether the search may leave it out; null when none is or the analysis does not apply. */
     static boolean[] of(NumericTask task) {
-        int no = task.ops.size();
-        if (no > MAX_OPS) return null;
-        for (NumericTask.Op op : task.ops) for (NumericTask.Effects e : op.effects()) if (e.when() != NumericTask.TRUE) return null;
-        // an instance whose precondition nests conjunctions or disjunctions is not compared: always kept
-        Shape[] shapes = new Shape[no];
-        for (int o = 0; o < no; o++) shapes[o] = shape(task.ops.get(o));
+        Shapes sh = task.opShapes != null ? task.opShapes : Shapes.of(task);
+        if (sh.shapes == null) return null;
+        Shape[] shapes = sh.shapes;
+        int[][] addOf = sh.addOf;
+        int no = shapes.length;
         int nf = task.factNames.size();
-        int[] count = new int[nf];
-        for (Shape s : shapes) if (s != null) for (int a : s.adds) count[a]++;
-        int[][] addOf = new int[nf][];
-        for (int f = 0; f < nf; f++) addOf[f] = new int[count[f]];
-        Arrays.fill(count, 0);
-        for (int o = 0; o < no; o++) if (shapes[o] != null) for (int a : shapes[o].adds) addOf[a][count[a]++] = o;
-
         int[] needTrue = new int[nf];
         int[] needFalse = new int[nf];
         need(task.goal, true, needTrue, needFalse);
@@ -91,7 +124,7 @@ final class NumericDominatedOps {
         // comparisons read fluents only; constants nothing
     }
 
-    private static Shape shape(NumericTask.Op op) {
+    private static Shape shape(NumericTask.Op op, Map<Map<NumericTask.NumEffect, Integer>, Integer> numbering) {
         TreeSet<Integer> preTrue = new TreeSet<>();
         TreeSet<Integer> preFalse = new TreeSet<>();
         List<NumericTask.Cond> other = new ArrayList<>();
@@ -109,7 +142,8 @@ final class NumericDominatedOps {
             for (int d : e.dels()) dels.add(d);
             for (NumericTask.NumEffect n : e.numeric()) numeric.merge(n, 1, Integer::sum);
         }
-        return new Shape(ints(preTrue), ints(preFalse), other, ints(adds), ints(dels), numeric);
+        int id = numeric.isEmpty() ? NO_NUMERIC : numbering.computeIfAbsent(numeric, k -> numbering.size());
+        return new Shape(ints(preTrue), ints(preFalse), other, ints(adds), ints(dels), id);
     }
 
     private static int[] ints(TreeSet<Integer> s) {
@@ -117,7 +151,7 @@ final class NumericDominatedOps {
     }
 
     private static boolean useless(Shape s, int[] needTrue, int[] needFalse) {
-        if (!s.numeric.isEmpty()) return false;
+        if (s.numeric != NO_NUMERIC) return false;
         for (int a : s.adds) if (needTrue[a] > 0) return false;
         for (int d : s.dels) if (needFalse[d] > 0) return false;
         return true;
@@ -139,7 +173,7 @@ final class NumericDominatedOps {
     }
 
     private static boolean dominates(Shape d, Shape o, int[] needTrue, int[] needFalse) {
-        if (!d.numeric.equals(o.numeric)) return false;
+        if (d.numeric != o.numeric) return false;
         if (!DominatedOps.subset(d.preTrue, o.preTrue) || !DominatedOps.subset(d.preFalse, o.preFalse) || !DominatedOps.subset(d.adds, o.adds)
                 || !DominatedOps.subset(d.dels, o.dels)) return false;
         if (!o.other.containsAll(d.other)) return false;

@@ -127,11 +127,16 @@ final class NumericSearch {
     }
 
     static SolveResult solve(Domain domain, Problem problem, Duration timeout) {
+        return solve(domain, problem, timeout, null);
+    }
+
+    /** @param groundings where groundings are kept for the next goal (null: ground afresh) */
+    static SolveResult solve(Domain domain, Problem problem, Duration timeout, NumericGroundingCache groundings) {
         long start = System.nanoTime();
         long deadline = start + timeout.toNanos();
         NumericTask task;
         try {
-            task = new NumericTask(domain, problem);
+            task = groundings == null ? new NumericTask(domain, problem) : groundings.task(domain, problem);
         } catch (PlanningInputException e) {
             return SolveResult.error(e.getMessage());
         } catch (org.triad.planner.pddl.PddlParseException e) {

@@ -90,6 +90,8 @@ final class NumericTask {
      * matters), null for none; set by the search, read by its successor index and admissible bound.
      */
     boolean[] leftOut;
+    /** The instances' shapes for {@link NumericDominatedOps}, computed once with a cached grounding (null: computed per search). */
+    NumericDominatedOps.Shapes opShapes;
 
     private final Map<String, Integer> factIds = new HashMap<>();
     private final Map<String, Integer> fluentIds = new LinkedHashMap<>();
@@ -106,21 +108,11 @@ final class NumericTask {
     NumericTask(Domain domain, Problem problem) {
         if (!domain.axioms().isEmpty()) throw new PlanningInputException("derived predicates together with numeric fluents are not supported");
         universe = new ObjectUniverse(domain, problem);
-        for (Action a : domain.actions()) changes(a.effects());
+        changes(domain, changedPredicates, changedFunctions, assignedFunctions);
         PlanMetric planMetric = PlanMetric.of(problem);
         countsSteps = planMetric != null && planMetric.fluents().stream().anyMatch(f -> f.name().equals(PlanMetric.TOTAL_TIME));
         if (countsSteps) changedFunctions.add(PlanMetric.TOTAL_TIME);
-        for (Problem.NumericFact f : problem.numericInit()) {
-            String key = NumericValues.key(f.function(), f.args());
-            if (!Double.isFinite(f.value())) throw new PlanningInputException("(" + key + ") is not a finite number in :init");
-            initFluents.put(key, f.value());
-        }
-        // an accumulator the problem does not start is 0, as Metric-FF and VAL take total-cost
-        if (changedFunctions.contains(PlanMetric.TOTAL_COST)
-                || planMetric != null && planMetric.fluents().stream().anyMatch(f -> f.name().equals(PlanMetric.TOTAL_COST))) {
-            initFluents.putIfAbsent(PlanMetric.TOTAL_COST, 0.0);
-        }
-        if (countsSteps) initFluents.put(PlanMetric.TOTAL_TIME, 0.0);
+        initialValues(problem, planMetric);
         for (Formula.Atom a : problem.init()) {
             String key = PddlWriter.atom(a);
             if (changedPredicates.contains(a.predicate())) initFacts.add(fact(key));
@@ -132,6 +124,68 @@ final class NumericTask {
             }
         }
         for (Action a : domain.actions()) ground(a);
+        opsRead = new boolean[fluentNames.size()];
+        opsOnlyAccumulate = new boolean[fluentNames.size()];
+        java.util.Arrays.fill(opsOnlyAccumulate, true);
+        for (Op op : ops) {
+            reads(op.pre(), opsRead);
+            for (Effects e : op.effects()) {
+                reads(e.when(), opsRead);
+                for (NumEffect x : e.numeric()) {
+                    reads(x.value(), opsRead);
+                    if (!x.kind().equals("increase") && !x.kind().equals("decrease")) opsOnlyAccumulate[x.fluent()] = false;
+                }
+            }
+        }
+        goalAndMetric(problem, planMetric);
+    }
+
+    /**
+     * The same grounding for another problem that {@link NumericGroundingCache} found to share everything
+     * grounding reads: the domain, objects, static facts, the values of fluents no action changes, which
+     * changed fluents have a value, and the metric. Only the initial state, the goal and the metric's
+     * consequences (accumulators) are the problem's own; the instances are shared (never changed after
+     * grounding), the numbering is copied (a goal may name facts or fluents no instance does).
+     */
+    NumericTask(NumericTask grounded, Problem problem) {
+        universe = grounded.universe;
+        countsSteps = grounded.countsSteps;
+        ops.addAll(grounded.ops);
+        factNames.addAll(grounded.factNames);
+        factIds.putAll(grounded.factIds);
+        fluentNames.addAll(grounded.fluentNames);
+        fluentIds.putAll(grounded.fluentIds);
+        staticFacts.addAll(grounded.staticFacts);
+        changedPredicates.addAll(grounded.changedPredicates);
+        changedFunctions.addAll(grounded.changedFunctions);
+        assignedFunctions.addAll(grounded.assignedFunctions);
+        undefinedReads.putAll(grounded.undefinedReads);
+        opsRead = grounded.opsRead;
+        opShapes = grounded.opShapes;
+        opsOnlyAccumulate = grounded.opsOnlyAccumulate;
+        PlanMetric planMetric = PlanMetric.of(problem);
+        initialValues(problem, planMetric);
+        for (Formula.Atom a : problem.init()) {
+            if (changedPredicates.contains(a.predicate())) initFacts.add(fact(PddlWriter.atom(a)));
+        }
+        goalAndMetric(problem, planMetric);
+    }
+
+    private void initialValues(Problem problem, PlanMetric planMetric) {
+        for (Problem.NumericFact f : problem.numericInit()) {
+            String key = NumericValues.key(f.function(), f.args());
+            if (!Double.isFinite(f.value())) throw new PlanningInputException("(" + key + ") is not a finite number in :init");
+            initFluents.put(key, f.value());
+        }
+        // an accumulator the problem does not start is 0, as Metric-FF and VAL take total-cost
+        if (changedFunctions.contains(PlanMetric.TOTAL_COST)
+                || planMetric != null && planMetric.fluents().stream().anyMatch(f -> f.name().equals(PlanMetric.TOTAL_COST))) {
+            initFluents.putIfAbsent(PlanMetric.TOTAL_COST, 0.0);
+        }
+        if (countsSteps) initFluents.put(PlanMetric.TOTAL_TIME, 0.0);
+    }
+
+    private void goalAndMetric(Problem problem, PlanMetric planMetric) {
         try {
             goal = cond(problem.goal(), Map.of(), false, "the goal");
         } catch (Undefined e) {
@@ -150,7 +204,19 @@ final class NumericTask {
         findAccumulators();
     }
 
+    /** Predicates and functions some action's effects change, and the functions some action assigns. */
+    static void changes(Domain domain, Set<String> predicates, Set<String> functions, Set<String> assigned) {
+        for (Action a : domain.actions()) changes(a.effects(), predicates, functions, assigned);
+    }
+
     private final boolean countsSteps;
+    /**
+     * Per fluent of the grounding (before a goal adds any): whether an instance reads it, and whether
+     * every instance only increases or decreases it; the instances' share of {@link #findAccumulators},
+     * kept with a cached grounding.
+     */
+    private boolean[] opsRead;
+    private boolean[] opsOnlyAccumulate;
     /** Per fluent without a value, the actions whose instances read it (so never apply), with their numbers. */
     private final Map<String, Map<String, Integer>> undefinedReads = new LinkedHashMap<>();
 
@@ -177,20 +243,11 @@ final class NumericTask {
         int n = fluentNames.size();
         accumulator = new boolean[n];
         metricWeight = new double[n];
-        boolean[] read = new boolean[n];
-        boolean[] onlyAccumulates = new boolean[n];
-        java.util.Arrays.fill(onlyAccumulates, true);
+        // fluents the goal or metric added after grounding: no instance reads or changes them
+        boolean[] read = java.util.Arrays.copyOf(opsRead, n);
+        boolean[] onlyAccumulates = java.util.Arrays.copyOf(opsOnlyAccumulate, n);
+        java.util.Arrays.fill(onlyAccumulates, opsOnlyAccumulate.length, n, true);
         reads(goal, read);
-        for (Op op : ops) {
-            reads(op.pre(), read);
-            for (Effects e : op.effects()) {
-                reads(e.when(), read);
-                for (NumEffect x : e.numeric()) {
-                    reads(x.value(), read);
-                    if (!x.kind().equals("increase") && !x.kind().equals("decrease")) onlyAccumulates[x.fluent()] = false;
-                }
-            }
-        }
         boolean[] linear = new boolean[n];
         if (metric != null) linearIn(metric, true, linear, read);
         for (int f = 0; f < n; f++) {
@@ -266,16 +323,16 @@ final class NumericTask {
         };
     }
 
-    private void changes(List<PddlEffect> effects) {
+    private static void changes(List<PddlEffect> effects, Set<String> predicates, Set<String> functions, Set<String> assigned) {
         for (PddlEffect e : effects) {
-            if (e instanceof PddlEffect.Add a) changedPredicates.add(a.atom().predicate());
-            else if (e instanceof PddlEffect.Delete d) changedPredicates.add(d.atom().predicate());
-            else if (e instanceof PddlEffect.Forall q) changes(q.body());
-            else if (e instanceof PddlEffect.Increase i) changedFunctions.add(i.function());
-            else if (e instanceof PddlEffect.When w) changes(w.body());
+            if (e instanceof PddlEffect.Add a) predicates.add(a.atom().predicate());
+            else if (e instanceof PddlEffect.Delete d) predicates.add(d.atom().predicate());
+            else if (e instanceof PddlEffect.Forall q) changes(q.body(), predicates, functions, assigned);
+            else if (e instanceof PddlEffect.Increase i) functions.add(i.function());
+            else if (e instanceof PddlEffect.When w) changes(w.body(), predicates, functions, assigned);
             else if (e instanceof PddlEffect.NumericEffect n) {
-                changedFunctions.add(n.target().name());
-                if (n.kind().equals("assign")) assignedFunctions.add(n.target().name());
+                functions.add(n.target().name());
+                if (n.kind().equals("assign")) assigned.add(n.target().name());
             }
         }
     }

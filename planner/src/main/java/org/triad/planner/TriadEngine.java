@@ -131,6 +131,8 @@ public final class TriadEngine implements PddlPlanner {
     static final long IMPROVEMENT_EVALUATIONS_PER_STEP = 60;
 
     private final GroundedProblemCache cache;
+    /** Numeric groundings, kept as {@link #cache} keeps classical ones (a robot's goals with a battery). */
+    private final NumericGroundingCache numericGroundings = new NumericGroundingCache(8);
     private final long improvementCap;
 
     public TriadEngine() {
@@ -164,7 +166,7 @@ public final class TriadEngine implements PddlPlanner {
     @Override
     public SolveResult solve(Domain domain, Problem problem, Duration timeout) {
         if (NumericSearch.isNumeric(domain, problem)) {
-            return NumericSearch.solve(domain, problem, timeout); // PDDL 2.1 numeric fluents: a search of their own
+            return NumericSearch.solve(domain, problem, timeout, numericGroundings); // PDDL 2.1 numeric fluents: a search of their own
         }
         PlanMetric metric;
         try {
@@ -173,7 +175,7 @@ public final class TriadEngine implements PddlPlanner {
             return SolveResult.error(e.getMessage());
         }
         if (metric != null && !metric.isTotalCost() && !isPlanLength(metric)) {
-            return NumericSearch.solve(domain, problem, timeout); // any other metric: the numeric search minimises it
+            return NumericSearch.solve(domain, problem, timeout, numericGroundings); // any other metric: the numeric search minimises it
         }
         boolean minimizeCost = metric != null && metric.isTotalCost();
         long start = System.nanoTime();

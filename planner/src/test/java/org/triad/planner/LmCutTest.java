@@ -30,6 +30,21 @@ class LmCutTest {
     }
 
     /**
+     * A work limit ends the rounds early: the cuts so far are still a lower bound (here h^max's round
+     * alone, before the second landmark), {@link LmCut#stopped} says the bound is the weaker one, and the
+     * next call without a limit is whole again.
+     */
+    @Test
+    void aWorkLimitStopsAtALowerBound() {
+        LmCut lm = new LmCut(5, PRE, ADD, COST);
+        long h = lm.value(new int[] { 0 }, new int[] { 4 }, lm.work());
+        assertTrue(lm.stopped());
+        assertTrue(h >= 0 && h < 13, "h " + h);
+        assertEquals(13, lm.value(new int[] { 0 }, new int[] { 4 }, Long.MAX_VALUE));
+        assertTrue(!lm.stopped());
+    }
+
+    /**
      * An operator costlier than the goal's h^max can still be the way in: two goals at 10 each
      * separately, or both at once through x (11, then free). A cut that leaves out the operator from x
      * (h^max stopped at the goal's value) is no landmark, and the sum was 20; every cut must see it: 11.
