@@ -15,19 +15,36 @@ import org.triad.planner.pddl.Problem;
  * The sample of the IPC corpus under src/test/resources/pddl/ipc (see SOURCE.md there), chosen for
  * what the parser must handle: names glued to variables (zenotravel), {@code either} types (ged,
  * storage), domain constants (childsnack, parcprinter), capitals and action costs (parcprinter).
- * Every problem is solved and its plan replayed on the lifted domain. The whole corpus is checked
+ * Every problem is solved and its plan replayed on the lifted domain (freecell: in
+ * {@code PlanImprovementTest}, with its length). The whole corpus is checked
  * by planner/scripts/check-ipc-corpus.sh.
  */
 class IpcSampleTest {
     @ParameterizedTest
     @CsvSource({"zenotravel/domain.pddl, zenotravel/p01.pddl", "zenotravel/domain.pddl, zenotravel/p02.pddl",
-            "ged-sat14-strips/domain.pddl, ged-sat14-strips/d-3-6.pddl", "storage/domain.pddl, storage/p01.pddl",
+            "storage/domain.pddl, storage/p01.pddl",
             "parcprinter-08-strips/p01-domain.pddl, parcprinter-08-strips/p01.pddl",
             "childsnack-sat14-strips/domain.pddl, childsnack-sat14-strips/child-snack_pfile05.pddl",
             "visitall-sat11-strips/domain.pddl, visitall-sat11-strips/problem12.pddl",
-            "freecell/domain.pddl, freecell/probfreecell-2-3.pddl", "tpp/domain.pddl, tpp/p01.pddl"})
+            "tpp/domain.pddl, tpp/p01.pddl"})
     void solvesAndValidates(String domain, String problem) {
         TriadEngineTest.solveAndValidate(TestProblems.domain("ipc/" + domain), TestProblems.problem("ipc/" + problem));
+    }
+
+    /**
+     * ged's {@code either} types. Its improvement with the whole cap (63 -> 56 steps by the first
+     * restart, then seconds of CPU in restarts that find nothing; 8 s of CPU in all) is measured in
+     * planner/BENCHMARK.md, not here: a twentieth of the cap still runs every step of improvement
+     * (this class and PlanImprovementTest took 31 s of CPU with the whole cap, 17 s so).
+     */
+    @Test
+    void gedWithEitherTypesSolvesAndValidates() {
+        Domain d = TestProblems.domain("ipc/ged-sat14-strips/domain.pddl");
+        Problem p = TestProblems.problem("ipc/ged-sat14-strips/d-3-6.pddl");
+        SolveResult r = new TriadEngine(new GroundedProblemCache(1), TriadEngine.IMPROVEMENT_CAP / 20).solve(d, p, Duration.ofMinutes(5));
+        assertTrue(r.isSolved(), r.status() + " " + r.message());
+        PlanValidator.Report report = PlanValidator.validate(d, p, r.plan());
+        assertTrue(report.valid(), report.message());
     }
 
     @Test

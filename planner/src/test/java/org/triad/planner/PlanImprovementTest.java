@@ -272,4 +272,20 @@ class PlanImprovementTest {
         assertTrue(r.plan().length() <= 31, r.plan().length() + " steps, Fast Downward 31");
         assertTrue(PlanValidator.validate(d, p, r.plan()).valid());
     }
+
+    /**
+     * A first plan of 15 steps from the goal agenda (freecell 3-2) gets the lazy search on h^add
+     * supporters and disjunctive landmarks: 14 steps (Fast Downward lama-first 13); with the level
+     * supporters, which shorter plans keep, it stayed 15. Work budgets: the same on any machine.
+     */
+    @Test
+    void aFifteenStepAgendaPlanGetsTheLazySearchOnAdditiveSupporters() {
+        assertTrue(15 >= PlanImprover.ADDITIVE_LAZY_STEPS);
+        Domain d = TestProblems.domain("ipc/freecell/domain.pddl");
+        Problem p = TestProblems.problem("ipc/freecell/probfreecell-3-2.pddl");
+        SolveResult r = new TriadEngine().solve(d, p, Duration.ofMinutes(10));
+        assertTrue(r.isSolved() && !r.isBestSoFar(), r.status() + " " + r.message());
+        assertTrue(r.plan().length() <= 14, r.plan().length() + " steps, Fast Downward 13");
+        assertTrue(PlanValidator.validate(d, p, r.plan()).valid());
+    }
 }
