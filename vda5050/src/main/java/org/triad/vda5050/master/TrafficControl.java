@@ -37,8 +37,8 @@ public final class TrafficControl {
     /** The doors tied to the door reservations, or null (reservations only). */
     private volatile DoorKeeper doors;
     private long requests;
-    /** Whether robots make way by themselves (see {@link #stepAside(boolean)}). */
-    private volatile boolean stepAside;
+    /** Whether robots make way by themselves (see {@link #stepAside(boolean)}); on unless a caller re-plans by itself. */
+    private volatile boolean stepAside = true;
 
     /**
      * @param waitBoundSeconds how long a robot may wait for a resource before its action fails with the reason
@@ -86,8 +86,10 @@ public final class TrafficControl {
      * Robots make way by themselves from now on (a side-node yield): one sent into a dead-end room that another robot
      * holds does not wait at the room's door, the other's only way out, but steps aside to a free neighbouring stop
      * node first and waits there for the door and the room together; one refused as a deadlock steps aside before its
-     * call fails, out of the way of the robots it would have waited for, and its caller re-plans from there. Off
-     * unless asked for: a caller that re-plans by itself (a test, a dispatcher of its own) finds the robot where it left it.
+     * call fails, out of the way of the robots it would have waited for, and its caller re-plans from there. On by
+     * default (wherever traffic control drives: {@code ./triad serve}, the benchmarks); off for a caller that moves its
+     * robots out of the way by itself (a test of the table's refusals, a dispatcher of its own), which then finds a
+     * refused robot where it left it.
      */
     public TrafficControl stepAside(boolean on) {
         this.stepAside = on;

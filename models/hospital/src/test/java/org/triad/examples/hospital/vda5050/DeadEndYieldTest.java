@@ -35,7 +35,7 @@ class DeadEndYieldTest {
         Path dir = Path.of("target", "vda5050", "deadEndYield");
         List<String> log = new CopyOnWriteArrayList<>();
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 2, 2, dir);
+                AgvProcess building = AgvProcess.building(broker.url(), 2, 10, dir); // 10x: the simulated building, paced; what is checked is the order of events, not their time
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, log::add);
                 DeviceLink keeperLink = DeviceLink.connect(broker.url(), "dead-end-keeper", log::add);
                 DoorKeeper keeper = new DoorKeeper(keeperLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, log::add)) {

@@ -35,7 +35,7 @@ class TrafficLiftTest {
         Path dir = Path.of("target", "vda5050", "trafficLift");
         List<String> log = new CopyOnWriteArrayList<>();
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 2, 2, dir); // 2x: a ride takes seconds, courier-2 asks within them
+                AgvProcess building = AgvProcess.building(broker.url(), 2, 10, dir); // 10x: a ride still takes seconds of wall clock, courier-2 asks at once
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, log::add);
                 DeviceLink keeperLink = DeviceLink.connect(broker.url(), "traffic-lift-keeper", log::add);
                 DoorKeeper keeper = new DoorKeeper(keeperLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, log::add)) {
