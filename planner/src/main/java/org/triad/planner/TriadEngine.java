@@ -287,6 +287,7 @@ public final class TriadEngine implements PddlPlanner {
             fromAgenda = plan != null;
         }
         NegativeGoalCompilation compiledPlan = null;
+        FirstPlanPortfolio portfolio = null;
         if (plan == null && System.nanoTime() < deadline) {
             long beforePortfolio = meter.now();
             NegativeGoalCompilation c = NegativeGoalCompilation.of(task, q.init(), q.goalPos(), q.goalNeg());
@@ -300,7 +301,7 @@ public final class TriadEngine implements PddlPlanner {
             if (r != null && r.outcome() == BestFirstSearch.Outcome.FOUND && !solves(succ, q, r.plan())) r = null;
             if (r != null) compiledPlan = c;
             if (r == null) {
-                FirstPlanPortfolio portfolio = new FirstPlanPortfolio(task, h, succ, deadline);
+                portfolio = new FirstPlanPortfolio(task, h, succ, deadline);
                 r = portfolio.run(q.init(), q.goalPos(), q.goalNeg(), effort);
                 // its own heuristics' work besides what the meter saw of h and succ
                 portfolioWork += portfolio.work() - (meter.now() - beforePortfolio);
@@ -311,6 +312,7 @@ public final class TriadEngine implements PddlPlanner {
             }
         }
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
+        if (portfolio != null && improvementCap <= 0) portfolio.release();
         boolean bestSoFar = false;
         if (exact) {
             // a shortest plan: nothing to eliminate (and elimination is quadratic in its length:
@@ -330,6 +332,14 @@ public final class TriadEngine implements PddlPlanner {
             int goals = open.size();
             for (int g : q.goalNeg()) if (Arrays.binarySearch(q.init(), g) >= 0) goals++;
             long budget = improvementBudget(improvementCap, firstPlan, plan.length, goals, fromAgenda);
+            if (portfolio != null && goals <= 1) portfolio.release();
+            if (portfolio != null && goals > 1) {
+                // the portfolio's other searches go on first, for as much work as it took to the plan
+                // (within the improvement's budget, which pays for it): another route, where the first
+                // plan's is one no improvement shortens (nomystery p07 48 -> 46, Fast Downward 43)
+                plan = portfolio.shorterPlan(q.init(), q.goalPos(), q.goalNeg(), plan, Math.min(budget / 2, portfolio.work()), effort);
+                budget -= Math.min(budget, portfolio.continuedWork());
+            }
             long evaluations = Math.max(Math.max(IMPROVEMENT_MIN_EVALUATIONS, IMPROVEMENT_EVALUATION_FACTOR * effort[1]),
                     goals <= 1 ? 0 : IMPROVEMENT_EVALUATIONS_PER_STEP * plan.length);
             int[] improved;

@@ -3,6 +3,7 @@ package org.triad.planner;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
@@ -103,6 +104,39 @@ class FirstPlanPortfolioTest {
         assertEquals(BestFirstSearch.Outcome.FOUND, resumed.outcome());
         org.junit.jupiter.api.Assertions.assertArrayEquals(whole.plan(), resumed.plan());
         assertEquals(whole.evaluated(), resumed.evaluated());
+    }
+
+    /**
+     * After the portfolio's plan, its other lazy searches go on for a budget of work and the shortest
+     * plan is kept: valid, never longer, the same in every run (work, not time); with no budget, or
+     * once the searches are released, the plan as it was.
+     */
+    @Test
+    void theOtherSearchesGoOnAndTheShortestPlanIsKept() {
+        GroundedProblem.Query q = query(GATES, THREE_GATES);
+        NegativeGoalCompilation c = NegativeGoalCompilation.of(q.task(), q.init(), q.goalPos(), q.goalNeg());
+        int[][] plans = new int[2][];
+        for (int run = 0; run < 2; run++) {
+            FirstPlanPortfolio portfolio = new FirstPlanPortfolio(c.task, new FfHeuristic(c.task), new Successors(c.task), deadline());
+            long[] effort = new long[2];
+            BestFirstSearch.Result first = portfolio.run(c.init, c.goalPos, new int[0], effort);
+            assertEquals(BestFirstSearch.Outcome.FOUND, first.outcome());
+            assertSame(first.plan(), portfolio.shorterPlan(c.init, c.goalPos, new int[0], first.plan(), 0, effort));
+            long evaluated = effort[1];
+            int[] plan = portfolio.shorterPlan(c.init, c.goalPos, new int[0], first.plan(), TriadEngine.IMPROVEMENT_CAP, effort);
+            assertTrue(effort[1] > evaluated && portfolio.continuedWork() > 0, "the other searches ran");
+            assertTrue(plan.length <= first.plan().length);
+            Successors s = new Successors(c.task);
+            int[] state = c.init;
+            for (int o : plan) {
+                assertTrue(s.isApplicable(state, o));
+                state = s.apply(state, o);
+            }
+            assertTrue(Successors.satisfies(state, c.goalPos, new int[0]));
+            assertSame(plan, portfolio.shorterPlan(c.init, c.goalPos, new int[0], plan, TriadEngine.IMPROVEMENT_CAP, effort), "released");
+            plans[run] = plan;
+        }
+        org.junit.jupiter.api.Assertions.assertArrayEquals(plans[0], plans[1]);
     }
 
     @Test
