@@ -21,7 +21,7 @@ class HospitalBuildingParkingTest {
         List<Vec2> spots = HospitalBuilding.LOBBY_SPOTS;
         for (Vec2 s : spots) {
             assertEquals("lobby", floor.waypointAt(s), s + " lies in the lobby");
-            assertTrue(distanceToSegment(s, waypoint, c4) >= CLEARANCE, s + " stands off the way out through the door");
+            assertTrue(distanceToSegment(s, waypoint, c4) >= HospitalBuilding.WAY_OUT_CLEARANCE, s + " stands 1 m off the way out through the door");
             assertTrue(distanceToSegment(HospitalFloor.PEOPLE.get("alice"), s, waypoint) >= CLEARANCE, "Alice stands off the way from " + s);
             for (Vec2 other : spots) {
                 if (other != s) {
@@ -32,17 +32,21 @@ class HospitalBuildingParkingTest {
     }
 
     @Test
-    void twentyCouriersStartInTheLobbyTheFirstOnTheDockTheOthersOnItsSpots() {
+    void twentyCouriersStartEighteenInTheLobbyTheFirstOnTheDockThenOneEachInWard3AndWard2() {
         List<String> names = new ArrayList<>();
         for (int i = 1; i <= 20; i++) {
             names.add("courier-" + i);
         }
         HospitalBuilding building = new HospitalBuilding(1, false, names);
+        assertEquals(17, HospitalBuilding.LOBBY_SPOTS.size());
         for (int i = 0; i < names.size(); i++) {
             Vec2 at = building.sim().robot(names.get(i)).position();
-            assertEquals("lobby", building.floor().waypointAt(at), names.get(i) + " starts in the lobby");
-            Vec2 expected = i == 0 ? building.floor().plan().waypoint("lobby").position() : HospitalBuilding.LOBBY_SPOTS.get(i - 1);
-            assertTrue(at.distance(expected) < 0.05, names.get(i) + " at " + at + ", not " + expected);
+            String room = i <= 17 ? "lobby" : i == 18 ? "ward3" : "ward2";
+            assertEquals(room, building.floor().waypointAt(at), names.get(i) + " starts in " + room);
+            if (i <= 17) {
+                Vec2 expected = i == 0 ? building.floor().plan().waypoint("lobby").position() : HospitalBuilding.LOBBY_SPOTS.get(i - 1);
+                assertTrue(at.distance(expected) < 0.05, names.get(i) + " at " + at + ", not " + expected);
+            }
         }
         assertTrue(building.sim().contacts().isEmpty(), "nobody touches at the start: " + building.sim().contacts());
     }
