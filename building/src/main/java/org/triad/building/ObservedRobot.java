@@ -54,6 +54,11 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
             public Optional<String> failureReason(GroundAction action) {
                 return own.failureReason(action);
             }
+
+            @Override
+            public Optional<org.triad.runtime.app.Failure> failure(GroundAction action) {
+                return own.failure(action);
+            }
         };
     }
 

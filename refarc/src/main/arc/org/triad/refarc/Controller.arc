@@ -12,7 +12,8 @@ import org.triad.runtime.component.ComponentFault;
  * successful action in between: a successful action resets the count, and so does a new goal.
  * A planning failure that follows a failed action in the same row names that action's failure first
  * (cause): the planner's "no plan" from where a stuck lift left the robot is the consequence, the
- * lift's fault the reason, on the re-plan and on the abort.
+ * lift's fault the reason, on the re-plan and on the abort. The abort carries the kind of that cause
+ * (run.failureCause(): the building's congestion, or a fault), so a fleet can queue the task again.
  * Tasks that arrive meanwhile queue. Every step is reported on status.
  *
  * At most one request (plan or action) is outstanding; run (a TaskProgress) numbers requests, so a
@@ -74,11 +75,13 @@ component Controller {
       run.actionDone();
       failures = 0;
       cause = "";
+      run.noFailureCause();
     };
     Executing -> Failed on actionResult [run.answers(actionResult) && !actionResult.succeeded()] / {
       status = new Status.ActionFailed(actionResult.action(), actionResult.reason());
       reason = "action " + actionResult.action() + " failed: " + actionResult.reason();
       cause = reason;
+      run.failedAs(actionResult.cause());
     };
 
     Idle -> Idle on fault / { status = new Status.ComponentFailed(fault); };
@@ -93,6 +96,7 @@ component Controller {
       status = new Status.ActionFailed(run.action(), run.faultReason(fault));
       reason = "action " + run.action() + " failed: " + run.faultReason(fault);
       cause = reason;
+      run.noFailureCause();
     };
 
     Failed -> Planning [failures < maxReplans] / {
@@ -101,7 +105,7 @@ component Controller {
       planRequest = run.planRequest();
     };
     Failed -> TaskDone [failures >= maxReplans] / {
-      status = new Status.TaskAborted(run.task(), run.goal(), reason);
+      status = new Status.TaskAborted(run.task(), run.goal(), reason, run.failureCause());
       status = new Status.RemoteOperationRequested(run.task(), run.goal(), reason);
     };
 

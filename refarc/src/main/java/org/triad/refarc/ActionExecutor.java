@@ -3,6 +3,8 @@ package org.triad.refarc;
 import java.util.Objects;
 import java.util.Optional;
 
+import org.triad.runtime.app.Failure;
+
 /**
  * Executes one action per request: fetches the state right before execution, checks the action's
  * precondition against it, and runs the action as an activity so the architecture stays responsive
@@ -36,11 +38,12 @@ public class ActionExecutor extends ActionExecutorTOP {
             return;
         }
         startActivity("execute", r, () -> runner.execute(r.action()),
-                ok -> result.send(ok ? ActionResult.success(r) : ActionResult.failure(r, failureReason(r))));
+                ok -> result.send(ok ? ActionResult.success(r) : failed(r)));
     }
 
-    private String failureReason(ActionRequest r) {
-        Optional<String> reason = runner.failureReason(r.action());
-        return reason == null || reason.isEmpty() ? "the platform reported failure" : "the platform reported failure: " + reason.get();
+    private ActionResult failed(ActionRequest r) {
+        Optional<Failure> f = runner.failure(r.action());
+        return f == null || f.isEmpty() ? ActionResult.failure(r, "the platform reported failure")
+                : ActionResult.failure(r, "the platform reported failure: " + f.get().reason(), f.get().cause());
     }
 }

@@ -1,6 +1,7 @@
 package org.triad.refarc;
 
 import java.util.Optional;
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 
@@ -15,5 +16,13 @@ public interface ActionRunner {
     /** Why {@code action}, just executed, returned {@code false}, if the platform can tell; reported on Status. */
     default Optional<String> failureReason(GroundAction action) {
         return Optional.empty();
+    }
+
+    /**
+     * {@link #failureReason} with its cause (a fault unless the platform says it was the building's congestion): the
+     * abort carries it, and a fleet queues a task that congestion ended again instead of calling an operator.
+     */
+    default Optional<Failure> failure(GroundAction action) {
+        return failureReason(action).map(Failure::fault);
     }
 }

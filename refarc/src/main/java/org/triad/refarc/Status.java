@@ -1,6 +1,7 @@
 package org.triad.refarc;
 
 import java.util.stream.Collectors;
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.Plan;
@@ -78,7 +79,19 @@ public sealed interface Status {
         }
     }
 
-    record TaskAborted(TaskInstance task, GoalInstance goal, String reason) implements Status {
+    /**
+     * The task gave up at {@code goal}; {@code cause} is the kind of the failure that ended it (the last action's, when a
+     * re-plan after it failed too): a fleet queues a task that the building's congestion ended again.
+     */
+    record TaskAborted(TaskInstance task, GoalInstance goal, String reason, Failure.Cause cause) implements Status {
+        public TaskAborted(TaskInstance task, GoalInstance goal, String reason) {
+            this(task, goal, reason, Failure.Cause.FAULT);
+        }
+
+        public TaskAborted {
+            java.util.Objects.requireNonNull(cause, "cause");
+        }
+
         @Override
         public String toString() {
             return "task " + task.describe() + " aborted at goal " + goal.describe() + ": " + reason;

@@ -1,5 +1,6 @@
 package org.triad.refarc;
 
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.Plan;
@@ -18,11 +19,15 @@ public final class TaskProgress {
     private long outstanding;
     private long lastRequestId;
 
+    /** The kind of the cause in the Controller's row of failures (see {@link #failedAs}). */
+    private Failure.Cause failureCause = Failure.Cause.FAULT;
+
     public void start(TaskInstance t) {
         task = t;
         goalIndex = -1;
         plan = null;
         outstanding = 0;
+        failureCause = Failure.Cause.FAULT;
     }
 
     public void clear() {
@@ -42,6 +47,21 @@ public final class TaskProgress {
     public void nextGoal() {
         goalIndex++;
         plan = null;
+        failureCause = Failure.Cause.FAULT;
+    }
+
+    /** The kind of the failure that the next abort reports (the last failed action's in this row of failures). */
+    public void failedAs(Failure.Cause cause) {
+        failureCause = cause == null ? Failure.Cause.FAULT : cause;
+    }
+
+    /** A success, a new goal or a component's fault: an abort now would be a fault. */
+    public void noFailureCause() {
+        failureCause = Failure.Cause.FAULT;
+    }
+
+    public Failure.Cause failureCause() {
+        return failureCause;
     }
 
     public GoalInstance goal() {

@@ -18,6 +18,7 @@ import org.triad.refarc.GoalPlanner;
 import org.triad.refarc.Status;
 import org.triad.refarc.fleet.FleetRobot;
 import org.triad.refarc.fleet.FloorMap;
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.State;
 import org.triad.runtime.app.TaskInstance;
@@ -53,12 +54,18 @@ public final class FleetService implements AutoCloseable {
     /** A robot on which this many tasks in a row aborted is taken out of dispatch until the operator puts it back. */
     public static final int ABORTS_IN_A_ROW = 3;
     /**
-     * How traffic control words a task's end that is the building's congestion, not the robot's fault (vda5050
-     * {@code RemoteAgv}/{@code RouteDrive}: a wait for another robot beyond the bound, a drive refused to avoid a
-     * deadlock): such an abort does not count toward {@link #ABORTS_IN_A_ROW}, or a jam would take every healthy robot
-     * in it out of dispatch (service/BENCHMARK.md, the mixed benchmark under traffic control).
+     * How many times a task that the building's congestion ended ({@link Failure.Cause#CONGESTION}: traffic control gave
+     * up on a drive, a wait over its bound or a refusal to avoid a deadlock) is queued again before it ends aborted with
+     * the reason. Each run already re-planned around the jam (RefArc's re-plans), so a task that congestion ends this many
+     * times more stands in a jam that does not clear by itself (a robot lost in a corridor, a blocked lift): the operator
+     * decides then. Such aborts never count toward {@link #ABORTS_IN_A_ROW}: a jam would take every healthy robot in it out
+     * of dispatch (service/BENCHMARK.md, the mixed benchmark under traffic control).
      */
-    static final List<String> CONGESTION = List.of("(the wait bound)", "refused by traffic control: deadlock avoided");
+    public static final int CONGESTION_REQUEUES = 3;
+    /** How long a task queued again after congestion waits before its next run, times the how-manieth time it is (the others move on meanwhile). */
+    private volatile java.time.Duration congestionPause = java.time.Duration.ofSeconds(10);
+    /** Tasks queued again after congestion, with when they may run again. */
+    private final Map<Long, Instant> notBefore = new ConcurrentHashMap<>();
 
     private final TaskCatalog catalog;
     private final TaskStore store;
@@ -311,6 +318,8 @@ public final class FleetService implements AutoCloseable {
                     queue.remove(id);
                     preferred.remove(id);
                     waitedFor.remove(id);
+                    notBefore.remove(id);
+                    claims.release(id); // a task queued again after congestion kept what it held
                     store.resolveRequests(id, "cancelled", now);
                     store.insertEvent(id, "cancelled", t.robot(), "cancelled by " + who, now);
                     store.updateTask(id, TaskState.CANCELLED, t.robot(), null, "cancelled by " + who, now);
@@ -372,6 +381,7 @@ public final class FleetService implements AutoCloseable {
             store.resolveRequests(t.id(), kind, now);
             store.insertEvent(t.id(), kind, robot, text, now);
             store.updateTask(t.id(), TaskState.QUEUED, null, robot, null, now);
+            notBefore.remove(t.id()); // the operator's word: now
             priorities.putIfAbsent(t.id(), t.priority());
             queue.add(t.id());
             if (robot == null) {
@@ -809,7 +819,12 @@ public final class FleetService implements AutoCloseable {
         if (idle.isEmpty()) {
             return null;
         }
+        Instant now0 = clock.instant();
         for (Long id : queue) {
+            Instant pause = notBefore.get(id);
+            if (pause != null && now0.isBefore(pause)) {
+                continue; // queued again after congestion: the others move on first
+            }
             TaskCall call = calls.get(id);
             Optional<Claims.Holder> held = claims.holder(id, claimed(id, call));
             if (held.isPresent()) {
@@ -822,7 +837,9 @@ public final class FleetService implements AutoCloseable {
                 }
                 continue;
             }
-            String want = preferred.get(id);
+            String wanted = preferred.get(id);
+            // queued again after congestion on a robot that has left dispatch since: any robot takes it
+            String want = wanted != null && notBefore.containsKey(id) && (lanes.get(wanted) == null || !lanes.get(wanted).online()) ? null : wanted;
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
             // a robot low on battery takes only its charging task
             candidates = candidates.stream().filter(l -> lowCharge(l) == null || chargingTask(id)).toList();
@@ -892,6 +909,8 @@ public final class FleetService implements AutoCloseable {
             waitedFor.remove(choice.task());
             queue.remove(choice.task());
             preferred.remove(choice.task());
+            notBefore.remove(choice.task());
+            claims.release(choice.task()); // what it kept while queued again after congestion: taken afresh, on this robot
             claims.take(choice.task(), best.name(), claimed(choice.task(), choice.call()));
             dispatchedAt.put(choice.task(), now);
             best.start(choice.task(), task);
@@ -922,11 +941,17 @@ public final class FleetService implements AutoCloseable {
         Instant now = clock.instant();
         // the robot leaves dispatch before the task's end is written, so whoever reads the abort sees it out
         String takenOut = null;
+        // the building's congestion ended the task: queued again (bounded), on the robot that ran it, after a pause
+        String requeued = null;
         if (status instanceof Status.TaskAborted a && stop == null) {
             synchronized (lock) {
-                takenOut = takeOutIfFailing(lane, taskId, a.reason());
+                takenOut = takeOutIfFailing(lane, taskId, a);
+                if (a.cause() == Failure.Cause.CONGESTION && dispatching) {
+                    requeued = congestionRequeue(lane, taskId, a, now);
+                }
             }
         }
+        String again = requeued;
         try {
             if (LEASE_LOST.equals(stop)) {
                 // the instance that took the lease over owns the task now and has queued it again: write nothing
@@ -941,9 +966,17 @@ public final class FleetService implements AutoCloseable {
                 } else if (stop != null && !stopAborts) {
                     String[] interrupted = { "interrupted", "interrupted: " + stop + "; queued again" };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, interrupted), TaskState.QUEUED, null, stop, null, now));
+                } else if (again != null) {
+                    String[] requeue = { "congestion_requeued", again };
+                    // its robot is preferred in memory only: after a restart any robot may take it, from the state it sees
+                    durably(() -> store.finishTask(taskId, lane.name(), List.of(event, requeue), TaskState.QUEUED, null, again, null, now));
                 } else {
                     // a robot that is gone: its true cause, whatever step RefArc was at when it noticed
-                    String cause = stopAborts && stop != null && !a.reason().contains(stop) ? stop + " (" + a.reason() + ")" : a.reason();
+                    String cause = stopAborts && stop != null && !a.reason().contains(stop) ? stop + " (" + a.reason() + ")"
+                            : a.cause() == Failure.Cause.CONGESTION && dispatching
+                                    ? a.reason() + "; the building's congestion ended this task " + (CONGESTION_REQUEUES + 1)
+                                            + " times (queued again " + CONGESTION_REQUEUES + " times): the jam does not clear by itself"
+                                    : a.reason();
                     String[] request = { "remote_operation", "remote operation requested: " + cause };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), cause,
                             new String[] { a.goal().describe(), cause }, now));
@@ -964,8 +997,13 @@ public final class FleetService implements AutoCloseable {
                         queue.add(taskId);
                     }
                     Instant began = dispatchedAt.remove(taskId);
-                    // what the robot may still carry after an abort is gone from the world for the others
-                    claims.release(taskId);
+                    if (again != null) {
+                        // it keeps what it holds (the robot may carry it): no other task gets those objects meanwhile
+                        queue.add(taskId);
+                    } else {
+                        // what the robot may still carry after an abort is gone from the world for the others
+                        claims.release(taskId);
+                    }
                     if (status instanceof Status.TaskCompleted) {
                         if (began != null) {
                             durations.addLast(java.time.Duration.between(began, now));
@@ -996,13 +1034,13 @@ public final class FleetService implements AutoCloseable {
      * Counts the abort and takes a robot on which {@link #ABORTS_IN_A_ROW} tasks in a row aborted out of dispatch; returns
      * why it was taken out, or null; call with the lock held.
      */
-    private String takeOutIfFailing(RobotLane lane, long taskId, String reason) {
-        if (congestion(reason)) {
+    private String takeOutIfFailing(RobotLane lane, long taskId, Status.TaskAborted abort) {
+        if (abort.cause() == Failure.Cause.CONGESTION) {
             return null; // neither the robot's fault nor its success: the count stays where it was
         }
         int inARow = lane.aborted();
         if (inARow >= ABORTS_IN_A_ROW && lane.online()) {
-            String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: " + reason
+            String why = "taken out of dispatch: " + inARow + " tasks in a row aborted on it, the last (task " + taskId + ") with: " + abort.reason()
                     + "; put it back online when it is fixed";
             lane.takeOut(why);
             return why;
@@ -1010,9 +1048,31 @@ public final class FleetService implements AutoCloseable {
         return null;
     }
 
-    /** Whether an abort's reason is the building's congestion ({@link #CONGESTION}), which does not count against the robot. */
-    static boolean congestion(String reason) {
-        return reason != null && CONGESTION.stream().anyMatch(reason::contains);
+    /**
+     * A task that the building's congestion ended goes back to the queue, at most {@link #CONGESTION_REQUEUES} times (counted
+     * on its timeline, so a restart does not reset it): on the robot that ran it (it may carry the task's objects, and
+     * RefArc re-plans from where it stands), not before a pause that grows with each time. Set before the abort is written,
+     * so that no look at the database queues it without them. Returns the timeline's text, or null when the bound is
+     * reached (the task ends aborted). Call with the lock held.
+     */
+    private String congestionRequeue(RobotLane lane, long taskId, Status.TaskAborted abort, Instant now) {
+        long before = store.events(taskId).stream().filter(e -> e.kind().equals("congestion_requeued")).count();
+        if (before >= CONGESTION_REQUEUES) {
+            return null;
+        }
+        java.time.Duration pause = congestionPause.multipliedBy(before + 1);
+        preferred.put(taskId, lane.name());
+        notBefore.put(taskId, now.plus(pause));
+        return "the building's congestion ended the run, not the robot: queued again (" + (before + 1) + " of " + CONGESTION_REQUEUES
+                + "), for " + lane.name() + " in " + pause.toSeconds() + " s: " + abort.reason();
+    }
+
+    /** The pause before a task queued again after congestion runs again (times the how-manieth time); tests shorten it. */
+    public void congestionPause(java.time.Duration pause) {
+        if (pause.isNegative()) {
+            throw new IllegalArgumentException("a pause is not negative: " + pause);
+        }
+        congestionPause = pause;
     }
 
     /** Ends a queued task without executing it, for {@code reason}; call with the lock held. */
@@ -1023,6 +1083,8 @@ public final class FleetService implements AutoCloseable {
         preferred.remove(taskId);
         claimed.remove(taskId);
         waitedFor.remove(taskId);
+        notBefore.remove(taskId);
+        claims.release(taskId);
         refusedToPublish.add(taskId);
     }
 

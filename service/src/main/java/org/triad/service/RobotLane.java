@@ -233,6 +233,12 @@ final class RobotLane implements AutoCloseable {
                 String stop = stopReason;
                 return stop != null ? Optional.of(stop) : runner.failureReason(action);
             }
+
+            @Override
+            public Optional<org.triad.runtime.app.Failure> failure(GroundAction action) {
+                String stop = stopReason;
+                return stop != null ? Optional.of(org.triad.runtime.app.Failure.fault(stop)) : runner.failure(action);
+            }
         };
     }
 

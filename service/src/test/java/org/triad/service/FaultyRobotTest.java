@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -56,17 +57,54 @@ class FaultyRobotTest {
         assertTrue(robot("dry-1").get("offlineReason").isNull());
     }
 
-    /** Traffic control's words for a jam (as the mixed benchmark's aborts gave them) do not count against the robot; a fault does. */
+    /**
+     * A run that the building's congestion ended (the dry robots' {@code jam=}: failures with traffic control's cause, as
+     * a wait over the bound or a refusal to avoid a deadlock end a drive) queues its task again, on the same robot: the
+     * next run completes, no operator is called, and it does not count against the robot.
+     */
     @Test
-    void anAbortThatIsTheBuildingsCongestionDoesNotCountAgainstTheRobot() {
-        assertTrue(FleetService.congestion("task GoTo(xray) aborted at goal IsAt(xray): action Courier.move(lobby, c4) failed: the platform"
-                + " reported failure: drive lobby -> c4 failed on AGV triad/courier-5: triad/courier-5 waits at lobby for node 'c4' (held by"
-                + " or promised to triad/courier-2) for more than 120.0 s (the wait bound)"));
-        assertTrue(FleetService.congestion("action Courier.move(c6, c3) failed: the platform reported failure: drive c6 -> c3 on AGV"
-                + " triad/courier-8 refused by traffic control: deadlock avoided: triad/courier-8 would wait for triad/courier-4 (node 'c3')"));
-        assertFalse(FleetService.congestion("action Courier.move(c4, c5) failed: the platform reported failure: PATH_BLOCKED"));
-        assertFalse(FleetService.congestion("drive c4 -> c5 on AGV triad/courier-1 refused by traffic control: the robot stands at 'c1' on the traffic map"),
-                "a robot the traffic map has elsewhere is the robot's own trouble");
-        assertFalse(FleetService.congestion("injected failure 1 of 1000 (fail=move*1000)"));
+    void aTaskThatCongestionEndedIsQueuedAgainAndCompletes() {
+        s = ServiceFixture.start(dir.resolve("db"), "dry:1,jam=move*4");
+        s.service.fleet().congestionPause(java.time.Duration.ZERO);
+        long id = s.submit("GoTo", "{\"dst\": \"xray\"}");
+        JsonNode done = s.awaitState(id, "completed");
+        assertEquals("dry-1", done.get("robot").asText());
+        List<String> kinds = kinds(done);
+        assertEquals(1, kinds.stream().filter("congestion_requeued"::equals).count(), kinds.toString());
+        assertTrue(kinds.indexOf("task_aborted") < kinds.indexOf("congestion_requeued")
+                && kinds.indexOf("congestion_requeued") < kinds.lastIndexOf("dispatched"), "aborted, queued again, dispatched again: " + kinds);
+        assertFalse(kinds.contains("remote_operation"), "congestion calls no operator: " + kinds);
+        String requeued = text(done, "congestion_requeued");
+        assertTrue(requeued.contains("(1 of " + FleetService.CONGESTION_REQUEUES + ")") && requeued.contains("injected congestion 4 of 4"), requeued);
+        assertEquals(0, s.get("/api/requests", ServiceFixture.OPERATOR).body().size(), "no remote-operation request");
+    }
+
+    /** A task that congestion keeps ending is queued again {@link FleetService#CONGESTION_REQUEUES} times, then ends aborted with the reason; the robot stays in dispatch. */
+    @Test
+    void aTaskThatCongestionKeepsEndingEndsAbortedWithTheReasonAfterTheBound() {
+        s = ServiceFixture.start(dir.resolve("db"), "dry:1,jam=move*1000");
+        s.service.fleet().congestionPause(java.time.Duration.ZERO);
+        JsonNode aborted = s.awaitState(s.submit("GoTo", "{\"dst\": \"xray\"}"), "aborted");
+        String reason = aborted.get("reason").asText();
+        assertTrue(reason.contains("injected congestion") && reason.contains("queued again " + FleetService.CONGESTION_REQUEUES + " times"), reason);
+        assertEquals(FleetService.CONGESTION_REQUEUES, kinds(aborted).stream().filter("congestion_requeued"::equals).count(), kinds(aborted).toString());
+        assertTrue(kinds(aborted).contains("remote_operation"), "the operator decides now: " + kinds(aborted));
+        JsonNode robot = robot("dry-1");
+        assertTrue(robot.get("online").asBoolean(), FleetService.CONGESTION_REQUEUES + 1 + " runs ended by congestion do not take the robot out: " + robot);
+    }
+
+    private static List<String> kinds(JsonNode task) {
+        List<String> out = new java.util.ArrayList<>();
+        task.get("events").forEach(e -> out.add(e.get("kind").asText()));
+        return out;
+    }
+
+    private static String text(JsonNode task, String kind) {
+        for (JsonNode e : task.get("events")) {
+            if (e.get("kind").asText().equals(kind)) {
+                return e.get("text").asText();
+            }
+        }
+        throw new AssertionError("no " + kind + " event in " + task);
     }
 }

@@ -193,6 +193,13 @@ class BehaviourTemplate {
 					«im.ref("java.lang.Object")» «names.actorVariable» = «FOR a : actors SEPARATOR ' : '»«names.actionParameter».actor().equals(«JavaLiterals.string(a.name)») ? this.«actorField(a)»«ENDFOR» : null;
 					return «names.actorVariable» instanceof «im.ref("org.triad.runtime.app.FailureExplaining")» «names.explainingVariable» ? «names.explainingVariable».lastFailure() : «im.ref("java.util.Optional")».empty();
 				}
+
+				/** The failure with its cause (the building's congestion or a fault), from the actor that can tell. */
+				@«im.ref("java.lang.Override")»
+				public «im.ref("java.util.Optional")»<«im.ref("org.triad.runtime.app.Failure")»> failure(«groundAction» «names.actionParameter») {
+					«im.ref("java.lang.Object")» «names.actorVariable» = «FOR a : actors SEPARATOR ' : '»«names.actionParameter».actor().equals(«JavaLiterals.string(a.name)») ? this.«actorField(a)»«ENDFOR» : null;
+					return «names.actorVariable» instanceof «im.ref("org.triad.runtime.app.FailureExplaining")» «names.explainingVariable» ? «names.explainingVariable».lastFailureWithCause() : «im.ref("java.util.Optional")».empty();
+				}
 			}
 		'''
 	}

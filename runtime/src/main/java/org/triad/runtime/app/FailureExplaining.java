@@ -10,4 +10,9 @@ import java.util.Optional;
 public interface FailureExplaining {
 	/** Why the most recent action of this actor failed, or empty if it did not fail or nobody knows. */
 	Optional<String> lastFailure();
+
+	/** {@link #lastFailure()} with its cause; a fault unless the implementation knows better (traffic control's congestion). */
+	default Optional<Failure> lastFailureWithCause() {
+		return lastFailure().map(Failure::fault);
+	}
 }

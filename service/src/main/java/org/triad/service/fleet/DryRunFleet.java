@@ -14,9 +14,10 @@ import org.triad.runtime.app.State;
  * Scheme {@code dry}, for every application: robots whose actions do exactly what their
  * postconditions say, in the fleet's one building (a {@link SharedWorld}: what one robot picks up is
  * gone for the others), like {@code ./triad run}. Argument
- * {@code N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K][,battery=P]} (a battery reported at P percent, for the charging policy): N robots starting where situation S puts the
+ * {@code N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P]} (a battery reported at P percent, for the charging policy): N robots starting where situation S puts the
  * robot (default: the service's situation), each action taking MS milliseconds, the first K calls of
- * ACTION failing on every robot, or every robot vanishing (its state can no longer be read) after K actions.
+ * ACTION failing on every robot (with {@code jam}: as the building's congestion, as traffic control's
+ * refusals and waits over the bound end a drive, so that the service queues the task again), or every robot vanishing (its state can no longer be read) after K actions.
  */
 public final class DryRunFleet implements RobotPlatformProvider {
     public static final int MAX_ROBOTS = 1000;
@@ -35,7 +36,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K][,gone=K][,battery=P]  N robots that do what the postconditions say, over a situation";
+        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P]  N robots that do what the postconditions say, over a situation";
     }
 
     @Override
@@ -46,6 +47,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
         long delayMillis = 0;
         String failAction = null;
         int failCalls = 0;
+        boolean jam = false;
         int goneAfter = -1;
         int battery = -1;
         for (int i = 1; i < parts.length; i++) {
@@ -59,13 +61,18 @@ public final class DryRunFleet implements RobotPlatformProvider {
                 case "delay" -> delayMillis = number("dry:...,delay=MS", value, 0, 600_000);
                 case "gone" -> goneAfter = number("dry:...,gone=K", value, 0, Integer.MAX_VALUE);
                 case "battery" -> battery = number("dry:...,battery=PERCENT", value, 0, 100);
-                case "fail" -> {
+                case "fail", "jam" -> {
+                    String key = kv[0].trim();
+                    if (failAction != null) {
+                        throw new IllegalArgumentException("dry: one of fail= and jam= per robot spec, not both; " + usage());
+                    }
+                    jam = key.equals("jam");
                     String[] ak = value.split("\\*", 2);
                     failAction = ak[0].trim();
-                    failCalls = ak.length == 2 ? number("dry:...,fail=ACTION*K", ak[1], 1, Integer.MAX_VALUE) : 1;
+                    failCalls = ak.length == 2 ? number("dry:...," + key + "=ACTION*K", ak[1], 1, Integer.MAX_VALUE) : 1;
                     String action = failAction;
                     if (context.schema().actions().stream().noneMatch(a -> a.name().equals(action))) {
-                        throw new IllegalArgumentException("dry:...,fail=" + value + ": the application has no action '" + action + "'");
+                        throw new IllegalArgumentException("dry:...," + key + "=" + value + ": the application has no action '" + action + "'");
                     }
                 }
                 default -> throw new IllegalArgumentException("dry: unknown option '" + kv[0] + "'; " + usage());
@@ -80,7 +87,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
         List<FleetRobot> robots = new ArrayList<>();
         for (int i = 1; i <= n; i++) {
             String name = "dry-" + ++numbered;
-            DryRunRobot r = new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, goneAfter);
+            DryRunRobot r = new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, jam, goneAfter);
             if (battery >= 0) {
                 r.reportBattery(battery);
             }

@@ -9,6 +9,7 @@ import org.triad.building.SharedWorld;
 import org.triad.refarc.ActionRunner;
 import org.triad.refarc.StateSource;
 import org.triad.refarc.fleet.FleetRobot;
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 
@@ -22,14 +23,18 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
     private final long delayMillis;
     private final String failAction;
     private final int failCalls;
+    /** Whether the injected failures are the building's congestion (jam=) rather than faults (fail=). */
+    private final boolean jam;
     private final int goneAfter;
     private final AtomicInteger failed = new AtomicInteger();
     private final AtomicInteger executed = new AtomicInteger();
     private volatile String lastFailure;
+    private volatile boolean lastCongested;
     /** The battery this robot reports (percent, never charging), or null for none: {@code dry:...,battery=P}. */
     private volatile org.triad.refarc.fleet.Battery battery;
 
-    DryRunRobot(String name, ModelRobot body, long delayMillis, String failAction, int failCalls, int goneAfter) {
+    DryRunRobot(String name, ModelRobot body, long delayMillis, String failAction, int failCalls, boolean jam, int goneAfter) {
+        this.jam = jam;
         this.name = name;
         this.world = body;
         this.delayMillis = delayMillis;
@@ -83,6 +88,7 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
     @Override
     public boolean execute(GroundAction action) throws InterruptedException {
         lastFailure = null;
+        lastCongested = false;
         if (gone()) {
             lastFailure = "robot " + name + " does not answer (connection lost)";
             return false;
@@ -92,7 +98,9 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
         }
         if (action.action().equals(failAction) && failed.get() < failCalls) {
             failed.incrementAndGet();
-            lastFailure = "injected failure " + failed.get() + " of " + failCalls + " (fail=" + failAction + "*" + failCalls + ")";
+            lastFailure = jam ? "injected congestion " + failed.get() + " of " + failCalls + " (jam=" + failAction + "*" + failCalls + ")"
+                    : "injected failure " + failed.get() + " of " + failCalls + " (fail=" + failAction + "*" + failCalls + ")";
+            lastCongested = jam;
             return false;
         }
         if (!world.execute(action)) {
@@ -109,6 +117,14 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
             return Optional.of("robot " + name + " does not answer (connection lost)");
         }
         return Optional.ofNullable(lastFailure);
+    }
+
+    @Override
+    public Optional<Failure> failure(GroundAction action) {
+        if (!gone() && lastCongested && lastFailure != null) {
+            return Optional.of(Failure.congestion(lastFailure));
+        }
+        return failureReason(action).map(Failure::fault);
     }
 
     private boolean gone() {

@@ -165,6 +165,11 @@ public final class ModelAgvActors implements StateSource, ActionRunner {
         return agv.lastFailure();
     }
 
+    @Override
+    public Optional<org.triad.runtime.app.Failure> failure(GroundAction action) {
+        return agv.lastFailureWithCause();
+    }
+
     /** Objects go by name, enumeration literals by literal, numbers, strings and Booleans as they are. */
     static Object parameterValue(Object v) {
         if (v instanceof DomainObject o) {

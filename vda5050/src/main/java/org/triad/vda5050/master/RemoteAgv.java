@@ -16,6 +16,7 @@ import java.util.function.Function;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
+import org.triad.runtime.app.Failure;
 import org.triad.runtime.app.FailureExplaining;
 import org.triad.vda5050.mqtt.MqttLink;
 import org.triad.vda5050.mqtt.Received;
@@ -69,6 +70,8 @@ public final class RemoteAgv implements FailureExplaining {
     private JsonNode factsheet;
     private final StateScreen screen;
     private String lastFailure;
+    /** The kind of {@link #lastFailure}: traffic control's congestion, or a fault. */
+    private Failure.Cause lastCause = Failure.Cause.FAULT;
     private long orderToFirstState = -1;
     /** An order this master gave up on (silence, a broken connection, a timeout) that the AGV may still be running. */
     private String abandonedOrder;
@@ -138,6 +141,13 @@ public final class RemoteAgv implements FailureExplaining {
     public Optional<String> lastFailure() {
         synchronized (lock) {
             return Optional.ofNullable(lastFailure);
+        }
+    }
+
+    @Override
+    public Optional<Failure> lastFailureWithCause() {
+        synchronized (lock) {
+            return Optional.ofNullable(lastFailure).map(why -> new Failure(why, lastCause));
         }
     }
 
@@ -404,6 +414,9 @@ public final class RemoteAgv implements FailureExplaining {
             traffic.stopAt(name(), route.get(0));
             synchronized (lock) {
                 fail(call + " on AGV " + name() + " refused by traffic control: " + refused.get());
+                if (drive.deadlockAvoided()) {
+                    lastCause = Failure.Cause.CONGESTION;
+                }
             }
             if (mayStepAside) {
                 stepAsideAfter(drive, traffic);
@@ -418,7 +431,7 @@ public final class RemoteAgv implements FailureExplaining {
                 // the AGV reports what the table cannot place (e.g. a node off the route): a failure with its reason, not a crash
                 v = new RouteDrive.Verdict(false, "traffic control: " + inconsistent.getMessage());
             }
-            return v.done() ? Outcome.DONE : v.failure() != null ? Outcome.failed(v.failure()) : Outcome.PENDING;
+            return v.done() ? Outcome.DONE : v.failure() != null ? new Outcome(false, v.failure(), v.congestion()) : Outcome.PENDING;
         }, drive.orderId(), true);
         if (!ok) {
             boolean down;
@@ -452,8 +465,10 @@ public final class RemoteAgv implements FailureExplaining {
             return;
         }
         String why;
+        Failure.Cause cause;
         synchronized (lock) {
             why = lastFailure;
+            cause = lastCause;
         }
         awaitAbandonedOrderEnded();
         String from = traffic.decisionPoint(name());
@@ -463,6 +478,7 @@ public final class RemoteAgv implements FailureExplaining {
             Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
             synchronized (lock) {
                 lastFailure = why + other.map(o -> "; nowhere to step aside to, so " + o + " makes way").orElse("");
+                lastCause = cause;
             }
             return;
         }
@@ -471,6 +487,7 @@ public final class RemoteAgv implements FailureExplaining {
         boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false);
         synchronized (lock) {
             lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure);
+            lastCause = cause; // the drive's end is what the call failed of; stepping aside is how it got out of the way
         }
     }
 
@@ -544,10 +561,10 @@ public final class RemoteAgv implements FailureExplaining {
         if (!awaitOnline()) {
             synchronized (lock) {
                 if (down()) {
-                    lastFailure = "AGV " + name() + " is " + connection + ", cannot " + call;
+                    fail("AGV " + name() + " is " + connection + ", cannot " + call);
                 } else {
-                    lastFailure = String.format(Locale.ROOT, "AGV %s did not come online on %s within %.1f s, cannot %s", name(), link.broker(),
-                            timeouts.onlineSeconds(), call);
+                    fail(String.format(Locale.ROOT, "AGV %s did not come online on %s within %.1f s, cannot %s", name(), link.broker(),
+                            timeouts.onlineSeconds(), call));
                 }
             }
             return false;
@@ -555,12 +572,12 @@ public final class RemoteAgv implements FailureExplaining {
         return true;
     }
 
-    private record Outcome(boolean done, String failure) {
-        static final Outcome PENDING = new Outcome(false, null);
-        static final Outcome DONE = new Outcome(true, null);
+    private record Outcome(boolean done, String failure, boolean congestion) {
+        static final Outcome PENDING = new Outcome(false, null, false);
+        static final Outcome DONE = new Outcome(true, null, false);
 
         static Outcome failed(String why) {
-            return new Outcome(false, why);
+            return new Outcome(false, why, false);
         }
     }
 
@@ -592,7 +609,11 @@ public final class RemoteAgv implements FailureExplaining {
                         return true;
                     }
                     if (o.failure() != null) {
-                        return fail(call + " failed on AGV " + name() + ": " + o.failure());
+                        fail(call + " failed on AGV " + name() + ": " + o.failure());
+                        if (o.congestion()) {
+                            lastCause = Failure.Cause.CONGESTION;
+                        }
+                        return false;
                     }
                 }
                 // the grace runs while this master is connected itself: after a broker restart the AGV's ONLINE comes after ours
@@ -625,6 +646,7 @@ public final class RemoteAgv implements FailureExplaining {
 
     private boolean fail(String why) {
         lastFailure = why;
+        lastCause = Failure.Cause.FAULT;
         return false;
     }
 

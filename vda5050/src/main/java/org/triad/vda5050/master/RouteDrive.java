@@ -27,10 +27,17 @@ import org.triad.vda5050.protocol.Messages.Node;
  * Sequence ids: node {@code i} of the route is {@code 2i}, the edge after it {@code 2i+1}.
  */
 final class RouteDrive {
-    /** What one state means for the call: still running, done, or failed with a reason. */
-    record Verdict(boolean done, String failure) {
+    /**
+     * What one state means for the call: still running, done, or failed with a reason; {@code congestion} when traffic
+     * control gave up on the drive (a deadlock avoided, a wait over the bound, made way), not the robot or a device.
+     */
+    record Verdict(boolean done, String failure, boolean congestion) {
         static final Verdict RUNNING = new Verdict(false, null);
         static final Verdict DONE = new Verdict(true, null);
+
+        Verdict(boolean done, String failure) {
+            this(done, failure, false);
+        }
     }
 
     /** Sends an order message (orderId, orderUpdateId, nodes, edges are what differs). */
@@ -130,22 +137,22 @@ final class RouteDrive {
             waiting = false;
             if (d.get() instanceof Refused r) {
                 refusal = r;
-                return endHere(r.reason());
+                return endHere(r.reason(), deadlockAvoided());
             }
             Optional<String> shut = extend((Granted) d.get());
             if (shut.isPresent()) {
-                return endHere(shut.get());
+                return endHere(shut.get(), false);
             }
         }
         if (waiting && traffic.makeWay(robot)) {
             waiting = false;
             madeWay = true;
-            return endHere("traffic control: " + robot + " made way (a robot refused as a deadlock had nowhere to step aside to)");
+            return endHere("traffic control: " + robot + " made way (a robot refused as a deadlock had nowhere to step aside to)", true);
         }
         Optional<Wait> late = traffic.overdue(robot);
         if (late.isPresent()) {
             waiting = false;
-            return endHere(String.format(Locale.ROOT, "%s for more than %.1f s (the wait bound)", late.get().reason(), traffic.waitBoundSeconds()));
+            return endHere(String.format(Locale.ROOT, "%s for more than %.1f s (the wait bound)", late.get().reason(), traffic.waitBoundSeconds()), true);
         }
         if (!orderId.equals(s.orderId())) {
             return Verdict.RUNNING;
@@ -171,7 +178,7 @@ final class RouteDrive {
             passed = at;
             Optional<String> refused = askAhead();
             if (refused.isPresent()) {
-                return endHere(refused.get());
+                return endHere(refused.get(), deadlockAvoided());
             }
         }
         for (Action a : edgeActions) {
@@ -270,12 +277,17 @@ final class RouteDrive {
         return Optional.empty();
     }
 
+    /** Whether traffic control refused the drive to avoid a deadlock (a refusal naming a cycle; a blocked place names none). */
+    boolean deadlockAvoided() {
+        return refusal != null && !refusal.cycle().isEmpty();
+    }
+
     /** Ends the order at the robot's decision point (the horizon deleted) and fails the call with the reason. */
-    private Verdict endHere(String why) {
+    private Verdict endHere(String why, boolean congestion) {
         endedHere = true;
         orders.send(orderId, ++updateId, List.of(node(baseEnd)), List.of());
         traffic.stopAt(robot, route.get(baseEnd));
-        return new Verdict(false, why);
+        return new Verdict(false, why, congestion);
     }
 
     /** The order (update) from route node {@code from} on: released up to the decision point, horizon after. */

@@ -226,6 +226,16 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
         return agv.lastFailure();
     }
 
+    @Override
+    public Optional<org.triad.runtime.app.Failure> lastFailureWithCause() {
+        synchronized (failureLock) {
+            if (deviceFailure != null) {
+                return Optional.of(org.triad.runtime.app.Failure.fault(deviceFailure));
+            }
+        }
+        return agv.lastFailureWithCause(); // a ride under traffic control is a drive: its congestion stays one
+    }
+
     /** Records why a device action failed (null: it did not fail on a device); returns false for the action. */
     private boolean deviceFailure(String why) {
         synchronized (failureLock) {

@@ -133,6 +133,11 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return agv.lastFailure();
     }
 
+    @Override
+    public Optional<org.triad.runtime.app.Failure> lastFailureWithCause() {
+        return agv.lastFailureWithCause(); // traffic control's congestion stays one, for the fleet service to queue the task again
+    }
+
     private AgvState state() {
         if (agv.state().isEmpty() && !agv.awaitOnline()) {
             throw new IllegalStateException("AGV " + agv.name() + " has not reported a state on " + agv.lastFailure().orElse("the broker"));

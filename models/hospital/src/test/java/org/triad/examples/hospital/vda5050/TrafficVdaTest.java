@@ -157,6 +157,8 @@ class TrafficVdaTest {
         String why = r2.lastFailure().orElseThrow();
         assertTrue(why.contains("courier-2 waits at lobby for") && why.contains("node 'c4'") && why.contains("triad/courier-1")
                 && why.contains("for more than 2.0 s"), why);
+        assertEquals(org.triad.runtime.app.Failure.Cause.CONGESTION, r2.lastFailureWithCause().orElseThrow().cause(),
+                "the building's congestion, not the robot's fault: a fleet queues the task again");
         assertEquals("lobby", r2.state().orElseThrow().lastNodeId(), "it never left its decision point");
         assertTrue(traffic.waits().isEmpty());
     }
@@ -194,6 +196,8 @@ class TrafficVdaTest {
         assertFalse(r2.driveRoute(List.of("c4", "c1", "c2"), traffic), "not driven into the lost robot");
         assertTrue(r2.lastFailure().orElseThrow().contains("corridor 'west' is blocked by robot triad/courier-1, lost there (CONNECTIONBROKEN"),
                 r2.lastFailure().orElseThrow());
+        assertEquals(org.triad.runtime.app.Failure.Cause.FAULT, r2.lastFailureWithCause().orElseThrow().cause(),
+                "a lost robot in the way is for an operator to clear, not congestion that passes");
         assertTrue(r2.driveRoute(List.of("c4", "c5", "c6"), traffic), "the others go on elsewhere: " + r2.lastFailure() + "\n" + log);
     }
 
@@ -300,6 +304,7 @@ class TrafficVdaTest {
         assertFalse(a.driveRoute(List.of("c6", "c3", "c2", "c1"), traffic), "refused, not queued in a cycle");
         String why = a.lastFailure().orElseThrow();
         assertTrue(why.contains("deadlock avoided: triad/courier-1 would wait for triad/courier-2"), why);
+        assertEquals(org.triad.runtime.app.Failure.Cause.CONGESTION, a.lastFailureWithCause().orElseThrow().cause(), why);
         // it stepped aside to the only free stop node next to c6 (c3 and c5 lie in corridors), out of the others' way
         assertTrue(why.endsWith("stepped aside to 'ward2', out of the others' way"), why);
         assertEquals("ward2", a.state().orElseThrow().lastNodeId());

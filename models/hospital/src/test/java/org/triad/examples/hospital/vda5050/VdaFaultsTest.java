@@ -166,10 +166,16 @@ class VdaFaultsTest {
         assertEquals(List.of(), monitor.violations());
     }
 
+    /**
+     * On one robot (its process and broker are this test's cost): a second run starts where the robot reports it is, not
+     * where the situation says; then malformed messages on its topics are logged with their topic and ignored, and the
+     * next task completes.
+     */
     @Test
-    void aSecondRunOnTheSameRobotStartsWhereTheRobotReportsItIsNotWhereTheSituationSays() throws Exception {
+    void aSecondRunStartsWhereTheRobotReportsItAndMalformedMessagesAreLoggedAndIgnored() throws Exception {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
-                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add)) {
+                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add);
+                MqttLink vandal = MqttLink.connect(broker.url(), "vandal", null, line -> { }, 10, 5)) {
             HospitalSimulation morning = new HospitalSimulation(1);
             State situation = new HospitalStateProvider(morning.courier(), morning.building()).currentState(); // robot in the lobby
             for (String room : List.of("ward1", "ward3")) {
@@ -182,15 +188,8 @@ class VdaFaultsTest {
             assertEquals("", failures(), "no action failed");
             assertEquals(List.of(), robot.lines("rejected order"), "the second run planned from ward1, where the robot reported itself");
             assertTrue(robot.lines("accepted order").get(robot.lines("accepted order").size() - 1).contains("ward3"), robot.output());
-        }
-        assertEquals(List.of(), monitor.violations());
-    }
+            assertEquals(List.of(), monitor.violations());
 
-    @Test
-    void malformedMessagesAreLoggedWithTheirTopicAndIgnoredAndTheTaskCompletes() {
-        try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 10, dir);
-                MasterControl master = MasterControl.connect(broker.url(), LOADED_TIMEOUTS, masterLog::add);
-                MqttLink vandal = MqttLink.connect(broker.url(), "vandal", null, line -> { }, 10, 5)) {
             String state = Topic.STATE.of("triad", "courier-1");
             String order = Topic.ORDER.of("triad", "courier-1");
             vandal.publishRaw(state, "{not json".getBytes(StandardCharsets.UTF_8), false);
@@ -204,7 +203,7 @@ class VdaFaultsTest {
                     + "\"version\":\"2.1.0\",\"manufacturer\":\"triad\",\"serialNumber\":\"courier-99\",\"connectionState\":\"ONLINE\"}")
                     .getBytes(StandardCharsets.UTF_8), false);
             VdaHospital h = new VdaHospital(master, "courier-1");
-            RefArcRun run = h.run(new GoTo(h.objects().room("ward3")), statuses::add);
+            RefArcRun run = h.run(new GoTo(h.objects().room("ward1")), statuses::add);
             assertEquals(RefArcRun.Outcome.COMPLETED, run.outcome(), run.log().toString());
             String log = String.join("\n", masterLog);
             assertTrue(log.contains("vda5050: ignored message on uagv/v2/triad/courier-1/state: not valid JSON"), log);
