@@ -143,7 +143,11 @@ final class NumericHeuristic {
         goalFacts = gf.stream().mapToInt(Integer::intValue).toArray();
         isGoalFact = new boolean[task.factNames.size()];
         for (int f : goalFacts) isGoalFact[f] = true;
+        projection = new ProjectionBound(task, preFacts, goals);
     }
+
+    /** Adds a delivery's legs to {@link #lowerBound} (h_max over the facts sees only the longer). */
+    private final ProjectionBound projection;
 
     /** The facts the goal mentions (positively, anywhere in it), whose costs the cost estimates need. */
     private final int[] goalFacts;
@@ -482,8 +486,14 @@ final class NumericHeuristic {
         java.util.Map<BitSet, Double> cache = unit ? unitBounds : costBounds;
         Double known = cache.get(facts);
         if (known != null) return known;
-        double h = computeLowerBound(facts, unit);
-        computed++;
+        double h;
+        if (projection.coversGoal()) {
+            // lookups, as cheap as the cache: not counted as computed (the budgets that count those stay for h_max's)
+            h = projection.bound(facts, unit ? unitCosts() : opCost);
+        } else {
+            h = computeLowerBound(facts, unit);
+            computed++;
+        }
         if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
         return h;
     }
@@ -530,6 +540,8 @@ final class NumericHeuristic {
         double[] fcost = factCosts(facts, null, own, true);
         double h = 0;
         for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h = Math.max(h, fcost[f.id()]);
+        // both are lower bounds on the same cost, so their maximum is one
+        if (h < Double.POSITIVE_INFINITY && projection.applies()) h = Math.max(h, projection.bound(facts, own));
         return h;
     }
 

@@ -1,0 +1,77 @@
+package org.triad.planner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.BitSet;
+
+import org.junit.jupiter.api.Test;
+import org.triad.planner.pddl.Domain;
+import org.triad.planner.pddl.PddlParser;
+import org.triad.planner.pddl.Problem;
+
+/**
+ * A courier on a line a - b - c - d (10 m a segment) fetches a box from d and brings it to a: the
+ * bound from the projection on the box's place and the courier's is both legs (20 + 30 m) and the pick
+ * and drop, the plan's cost, where h_max over the facts saw only the longer leg. With a second courier
+ * the projection sees one courier's place only (the other's pick and drop cost 1 each from anywhere):
+ * the bound stays at most the cheapest plan's cost, h_max's here.
+ */
+class ProjectionBoundTest {
+    private static final Domain DOMAIN = PddlParser.parseDomain("""
+            (define (domain courier)
+              (:requirements :strips :typing :fluents)
+              (:types place robot box)
+              (:predicates (at ?r - robot ?p - place) (adj ?a ?b - place) (box-at ?x - box ?p - place) (carries ?r - robot ?x - box) (empty ?r - robot))
+              (:functions (battery) (dist ?a ?b - place) (total-cost))
+              (:action move :parameters (?r - robot ?a ?b - place)
+                :precondition (and (at ?r ?a) (adj ?a ?b) (>= (battery) (dist ?a ?b)))
+                :effect (and (not (at ?r ?a)) (at ?r ?b) (decrease (battery) (dist ?a ?b)) (increase (total-cost) (dist ?a ?b))))
+              (:action pick :parameters (?r - robot ?x - box ?p - place)
+                :precondition (and (at ?r ?p) (box-at ?x ?p) (empty ?r))
+                :effect (and (carries ?r ?x) (not (box-at ?x ?p)) (not (empty ?r)) (increase (total-cost) 1)))
+              (:action drop :parameters (?r - robot ?x - box ?p - place)
+                :precondition (and (at ?r ?p) (carries ?r ?x))
+                :effect (and (box-at ?x ?p) (not (carries ?r ?x)) (empty ?r) (increase (total-cost) 1))))""", "courier.pddl");
+
+    private static Problem problem(String robots, String at) {
+        return PddlParser.parseProblem("""
+                (define (problem p) (:domain courier)
+                  (:objects a b c d - place %s - robot parcel - box)
+                  (:init %s (box-at parcel d) (adj a b) (adj b a) (adj b c) (adj c b) (adj c d) (adj d c)
+                    (= (dist a b) 10) (= (dist b a) 10) (= (dist b c) 10) (= (dist c b) 10) (= (dist c d) 10) (= (dist d c) 10)
+                    (= (battery) 100) (= (total-cost) 0))
+                  (:goal (box-at parcel a)) (:metric minimize (total-cost)))""".formatted(robots, at), "p.pddl");
+    }
+
+    private static double initialBound(Problem p) {
+        NumericTask task = new NumericTask(DOMAIN, p);
+        BitSet init = new BitSet();
+        task.initFacts.forEach(init::set);
+        return new NumericHeuristic(task).lowerBound(init, false);
+    }
+
+    @Test
+    void aDeliveryIsBoundedByBothLegs() {
+        Problem one = problem("r1", "(at r1 b) (empty r1)");
+        assertEquals(52, initialBound(one), 1e-9);
+        SolveResult r = NumericSearch.solve(DOMAIN, one, Duration.ofSeconds(60));
+        assertTrue(r.isSolved(), r.message());
+        assertEquals(52, PlanValidator.metricValue(DOMAIN, one, r.plan()).orElseThrow(), 1e-9);
+    }
+
+    @Test
+    void aSecondCourierIsNotMissedByTheBound() {
+        Problem two = problem("r1 r2", "(at r1 b) (empty r1) (at r2 c) (empty r2)");
+        NumericTask task = new NumericTask(DOMAIN, two);
+        BitSet init = new BitSet();
+        task.initFacts.forEach(init::set);
+        double h = new NumericHeuristic(task).lowerBound(init, false);
+        // r2 fetches the box (10 + 1) and brings it to a (30 + 1): the bound must not exceed that
+        assertTrue(h > 0 && h <= 42, "h " + h);
+        SolveResult r = NumericSearch.solve(DOMAIN, two, Duration.ofSeconds(60));
+        assertTrue(r.isSolved(), r.message());
+        assertEquals(42, PlanValidator.metricValue(DOMAIN, two, r.plan()).orElseThrow(), 1e-9);
+    }
+}
