@@ -31,7 +31,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * ACL): the building (its own JVM) serves the couriers as their identities and the doors and lift as
  * {@code building}; the service drives the courier as {@code master} and asks the pharmacy door and the lift over
  * master control's one connection. A delivery from the pharmacy (floor 0, behind its door) to ward 4 (floor 1)
- * completes, and the operator's {@code /api/devices} shows the door closed behind the courier and the lift at floor 1.
+ * completes under traffic control (the ride a reserved edge of the traffic map), and the operator's {@code /api/devices}
+ * shows the door closed behind the courier and the lift at floor 1.
  * A real Mosquitto with TLS, the real service, the couriers speaking VDA 5050.
  */
 class SecuredBuildingServiceTest {
@@ -60,9 +61,8 @@ class SecuredBuildingServiceTest {
                     .redirectErrorStream(true).redirectOutput(buildingLog.toFile()).start();
             awaitLine(buildingLog, "building: one hospital", building);
             System.setProperty(ClientCredentials.PROPERTY, credentials.dir().toString()); // the service is master control
-            // traffic=off: traffic control does not follow a courier through a ride yet (it keeps it at the lift's landing
-            // on floor 0 and refuses its next move upstairs); that is the traffic map's business (#21), not the devices'
-            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=10,traffic=off"), null, dir.resolve("db"),
+            // under traffic control (the default): the ride is a reserved edge of the traffic map, c7 -> d1
+            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=10"), null, dir.resolve("db"),
                     null, "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "secured-submit-token", AccessTokens.OPERATOR_ENV, OPERATOR));
             try (TriadService s = TriadService.start(o)) {
                 assertEquals(List.of("courier-1"), s.fleet().robots().stream().map(r -> r.name()).toList());
@@ -81,7 +81,9 @@ class SecuredBuildingServiceTest {
                 assertEquals("STOPPED", lift.path("state").asText(), devices.toString());
                 assertTrue(lift.path("detail").asText().contains("at floor 1"), devices.toString());
             }
-            assertTrue(Files.readString(buildingLog).contains("agv courier-1: carried by the lift from lift0 to lift1"), Files.readString(buildingLog));
+            // under traffic control the ride is the edge c7 -> d1 with its action 'ride' (the building brings the cabin)
+            String log = Files.readString(buildingLog);
+            assertTrue(log.contains(" c7 -ride-> d1") && log.contains("finished at d1"), log);
         } finally {
             if (building != null) {
                 building.destroy();
