@@ -12,7 +12,8 @@ import org.triad.dsl.triad.DecimalLiteral;
 import org.triad.dsl.triad.DomainClass;
 import org.triad.dsl.triad.DomainType;
 import org.triad.dsl.triad.EnumLiteral;
-import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.MemberRef;
+import org.triad.dsl.triad.Attribute;
 import org.triad.dsl.triad.Enumeration;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.Goal;
@@ -59,6 +60,11 @@ public final class SchemaBuilder {
 				}
 			}
 		}
+		// an attribute the models read (i.weight) is a property of its class, whose values are the objects' own
+		for (Attribute a : readAttributes(app)) {
+			DomainClass c = (DomainClass) a.eContainer();
+			b.property(new PropertySchema(c.getName(), a.getName(), List.of(new Param("o", c.getName())), TriadTypeSystem.typeOf(a.getType()).display()));
+		}
 		for (Actor actor : actors(app)) {
 			for (Property p : actor.getProperties()) {
 				b.property(new PropertySchema(actor.getName(), p.getName(), params(p.getParameters()),
@@ -84,6 +90,30 @@ public final class SchemaBuilder {
 			b.task(new TaskSchema(t.getName(), params(t.getParameters()), steps));
 		}
 		return b.build();
+	}
+
+	/** The attributes read in the actors', goals' and tasks' expressions, in the order of the class diagram. */
+	private static List<Attribute> readAttributes(Application app) {
+		java.util.Set<Attribute> read = new java.util.HashSet<>();
+		List<org.eclipse.emf.ecore.EObject> roots = new ArrayList<>(actors(app));
+		roots.addAll(app.getGoals());
+		roots.addAll(app.getTasks());
+		for (org.eclipse.emf.ecore.EObject root : roots) {
+			for (MemberRef r : org.eclipse.xtext.EcoreUtil2.getAllContentsOfType(root, MemberRef.class)) {
+				if (r.getMember() instanceof Attribute a && !a.eIsProxy()) {
+					read.add(a);
+				}
+			}
+		}
+		List<Attribute> ordered = new ArrayList<>();
+		if (app.getDomain() != null) {
+			for (DomainType t : app.getDomain().getTypes()) {
+				if (t instanceof DomainClass c) {
+					c.getAttributes().stream().filter(read::contains).forEach(ordered::add);
+				}
+			}
+		}
+		return ordered;
 	}
 
 	private static List<Actor> actors(Application app) {
@@ -156,8 +186,11 @@ public final class SchemaBuilder {
 		if (e instanceof StringLiteral l) {
 			return new Expr.Lit(l.getValue());
 		}
-		if (e instanceof EnumLiteralRef r) {
-			return new Expr.EnumLit(r.getEnumeration().getName(), r.getLiteral().getName());
+		if (e instanceof MemberRef r && r.getOwner() instanceof Enumeration en) {
+			return new Expr.EnumLit(en.getName(), ((EnumLiteral) r.getMember()).getName());
+		}
+		if (e instanceof MemberRef r && r.getMember() instanceof Attribute a && r.getOwner() instanceof org.triad.dsl.triad.Value v) {
+			return new Expr.Call(((DomainClass) a.eContainer()).getName(), a.getName(), List.of(new Expr.Var(v.getName())));
 		}
 		throw new IllegalArgumentException("not an expression of the Triad languages: " + e);
 	}

@@ -48,10 +48,14 @@ public class TriadContentProposalProvider extends IdeContentProposalProvider {
 			}
 			return;
 		}
-		if (ref == P.getEnumLiteralRef_Literal()) {
-			Enumeration e = qualifier == null ? null : resolve(context, P.getEnumLiteralRef_Enumeration(), qualifier, Enumeration.class);
-			if (e != null) {
+		if (ref == P.getMemberRef_Member()) {
+			// after 'DoorState.' its literals, after 'i.' the attributes of i's class
+			org.triad.dsl.triad.Qualifier owner = qualifier == null ? null
+					: resolve(context, P.getMemberRef_Owner(), qualifier, org.triad.dsl.triad.Qualifier.class);
+			if (owner instanceof Enumeration e) {
 				propose(e.getLiterals(), context, acceptor);
+			} else if (owner instanceof org.triad.dsl.triad.Value v && org.triad.dsl.typing.TriadTypeSystem.typeOf(v).domainClass() != null) {
+				propose(org.triad.dsl.typing.TriadTypeSystem.allAttributes(org.triad.dsl.typing.TriadTypeSystem.typeOf(v).domainClass()), context, acceptor);
 			}
 			return;
 		}

@@ -1,5 +1,9 @@
 package org.triad.dsl.linking;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
@@ -10,7 +14,14 @@ import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
 import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.DomainModel;
-import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.Attribute;
+import org.triad.dsl.triad.DomainClass;
+import org.triad.dsl.triad.EnumLiteral;
+import org.triad.dsl.triad.Enumeration;
+import org.triad.dsl.triad.MemberRef;
+import org.triad.dsl.triad.Value;
+import org.triad.dsl.typing.TriadType;
+import org.triad.dsl.typing.TriadTypeSystem;
 import org.triad.dsl.triad.PropertyCall;
 import org.triad.dsl.triad.TriadPackage;
 import org.triad.dsl.validation.CommonIssueCodes;
@@ -62,25 +73,12 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 		if (target == P.getSituation()) {
 			return error(CommonIssueCodes.UNKNOWN_SITUATION, "unknown situation '" + name + "' (no 'state " + name + "' in this application)");
 		}
-		if (target == P.getEnumeration() && context.getContext() instanceof EnumLiteralRef read) {
-			String type = objectType(read, name);
-			if (type != null) {
-				String attribute = NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(read)).replaceAll("\\s+", "");
-				attribute = attribute.substring(attribute.indexOf('.') + 1);
-				return error(CommonIssueCodes.ATTRIBUTE_READ, "'" + name + "." + attribute + "' reads attribute '" + attribute + "' of object '" + name
-						+ "': conditions read properties of actors, not attributes of objects; declare a world property, e.g. 'property int "
-						+ attribute + "(" + type + " o);', state its values in situations and write 'World." + attribute + "(" + name + ")'");
-			}
+		if (ref == P.getMemberRef_Owner()) {
+			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown name '" + name + "' before '.': no parameter, object or enumeration '"
+					+ name + "' here");
 		}
-		if (target == P.getEnumeration()) {
-			return error(CommonIssueCodes.UNKNOWN_ENUMERATION, "unknown enumeration '" + name + "'");
-		}
-		if (target == P.getEnumLiteral()) {
-			if (context.getContext() instanceof EnumLiteralRef literalRef && literalRef.getEnumeration() != null
-					&& literalRef.getEnumeration().eIsProxy()) {
-				return null; // the unknown enumeration is reported; its literals cannot be known
-			}
-			return error(CommonIssueCodes.UNKNOWN_LITERAL, "unknown enumeration literal '" + name + "'");
+		if (ref == P.getMemberRef_Member() && context.getContext() instanceof MemberRef read) {
+			return memberMessage(read, name);
 		}
 		if (target == P.getAttribute()) {
 			return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "unknown attribute '" + name + "'");
@@ -88,27 +86,51 @@ public class TriadLinkingDiagnosticMessageProvider extends LinkingDiagnosticMess
 		return error(CommonIssueCodes.UNKNOWN_NAME, "unknown " + target.getName() + " '" + name + "'");
 	}
 
-	/** The type of the parameter or situation object {@code name} where {@code e} is written, or null if there is none. */
-	private static String objectType(EObject e, String name) {
-		for (EObject c = e; c != null; c = c.eContainer()) {
-			if (c instanceof org.triad.dsl.triad.Parameterized owner) {
-				for (org.triad.dsl.triad.Parameter p : owner.getParameters()) {
-					if (name.equals(p.getName())) {
-						return org.triad.dsl.typing.TriadTypeSystem.typeOf(p.getType()).display();
-					}
-				}
-			}
-			if (c instanceof org.triad.dsl.triad.Situation s) {
-				for (org.triad.dsl.triad.ObjectDeclaration d : s.getDeclarations()) {
-					for (org.triad.dsl.triad.SituationObject o : d.getObjects()) {
-						if (name.equals(o.getName()) && d.getType() != null && !d.getType().eIsProxy()) {
-							return d.getType().getName();
-						}
-					}
-				}
+	/** 'X.m' where m is not a member of X: no such literal, no such attribute, or an attribute of another class. */
+	private static DiagnosticMessage memberMessage(MemberRef read, String name) {
+		EObject owner = read.getOwner();
+		if (owner == null) {
+			return error(CommonIssueCodes.UNKNOWN_LITERAL, "unknown enumeration literal or attribute '" + name + "'");
+		}
+		if (owner.eIsProxy()) {
+			return null; // the unknown name before the dot is reported; its members cannot be known
+		}
+		if (owner instanceof Enumeration e) {
+			return error(CommonIssueCodes.UNKNOWN_LITERAL, "unknown enumeration literal '" + name + "' of " + e.getName() + " (its literals: "
+					+ e.getLiterals().stream().map(EnumLiteral::getName).collect(Collectors.joining(", ")) + ")");
+		}
+		Value value = (Value) owner;
+		TriadType type = TriadTypeSystem.typeOf(value);
+		DomainClass c = type.domainClass();
+		if (c == null) {
+			return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "'" + value.getName() + "." + name + "': '" + value.getName() + "' is "
+					+ (type.isUnknown() ? "of an unknown type" : (type.display().matches("[aeiouAEIOU].*") ? "an " : "a ") + type.display()) + ", not an object: only objects of classes have attributes");
+		}
+		List<DomainClass> declaring = classesDeclaring(read, name);
+		if (!declaring.isEmpty()) {
+			return error(CommonIssueCodes.ATTRIBUTE_OF_OTHER_CLASS, "'" + value.getName() + "." + name + "': '" + value.getName() + "' is a "
+					+ c.getName() + ", and '" + name + "' is an attribute of " + declaring.stream().map(DomainClass::getName).collect(Collectors.joining(", "))
+					+ ", not of " + c.getName() + (declaring.size() == 1 ? "; give '" + value.getName() + "' the type " + declaring.get(0).getName() + "?" : ""));
+		}
+		List<Attribute> attributes = TriadTypeSystem.allAttributes(c);
+		return error(CommonIssueCodes.UNKNOWN_ATTRIBUTE, "unknown attribute '" + name + "' of " + c.getName() + " ('" + value.getName() + "." + name + "'; "
+				+ (attributes.isEmpty() ? c.getName() + " has no attributes)"
+						: "its attributes: " + attributes.stream().map(Attribute::getName).collect(Collectors.joining(", ")) + ")"));
+	}
+
+	/** The classes of the class diagram in use that declare an attribute {@code name}. */
+	private static List<DomainClass> classesDeclaring(EObject context, String name) {
+		DomainModel model = EcoreUtil2.getContainerOfType(context, DomainModel.class);
+		if (model == null || model.getDomain() == null || model.getDomain().eIsProxy()) {
+			return List.of();
+		}
+		List<DomainClass> result = new ArrayList<>();
+		for (org.triad.dsl.triad.DomainType t : model.getDomain().getTypes()) {
+			if (t instanceof DomainClass dc && dc.getAttributes().stream().anyMatch(a -> name.equals(a.getName()))) {
+				result.add(dc);
 			}
 		}
-		return null;
+		return result;
 	}
 
 	private static boolean isUnqualified(String name) {

@@ -8,9 +8,11 @@ import org.eclipse.emf.ecore.EReference;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.scoping.IScope;
 import org.eclipse.xtext.scoping.Scopes;
+import org.eclipse.xtext.scoping.impl.FilteringScope;
 import org.triad.dsl.triad.Actor;
 import org.triad.dsl.triad.AttributeAssignment;
-import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.MemberRef;
+import org.triad.dsl.triad.Value;
 import org.triad.dsl.triad.Enumeration;
 import org.triad.dsl.triad.ObjectDeclaration;
 import org.triad.dsl.triad.Parameterized;
@@ -38,9 +40,13 @@ public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
 		if (reference == P.getPropertyCall_Property() && context instanceof PropertyCall call) {
 			return propertyScope(call);
 		}
-		if (reference == P.getEnumLiteralRef_Literal() && context instanceof EnumLiteralRef ref) {
-			Enumeration e = ref.getEnumeration();
-			return e == null || e.eIsProxy() ? IScope.NULLSCOPE : Scopes.scopeFor(e.getLiterals());
+		if (reference == P.getMemberRef_Owner()) {
+			// 'x.m': a parameter or object named x hides an enumeration of that name
+			IScope enumerations = new FilteringScope(super.getScope(context, reference), d -> P.getEnumeration().isSuperTypeOf(d.getEClass()));
+			return Scopes.scopeFor(valueScopeElements(context), enumerations);
+		}
+		if (reference == P.getMemberRef_Member() && context instanceof MemberRef ref) {
+			return memberScope(ref);
 		}
 		if (reference == P.getValueRef_Value()) {
 			return valueScope(context);
@@ -60,7 +66,26 @@ public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
 		return actor == null || actor.eIsProxy() ? IScope.NULLSCOPE : Scopes.scopeFor(actor.getProperties());
 	}
 
+	/** The literals of an enumeration, or the attributes of an object's class and its superclasses. */
+	private static IScope memberScope(MemberRef ref) {
+		EObject owner = ref.getOwner();
+		if (owner == null || owner.eIsProxy()) {
+			return IScope.NULLSCOPE;
+		}
+		if (owner instanceof Enumeration e) {
+			return Scopes.scopeFor(e.getLiterals());
+		}
+		if (owner instanceof Value v && TriadTypeSystem.typeOf(v).domainClass() != null) {
+			return Scopes.scopeFor(TriadTypeSystem.allAttributes(TriadTypeSystem.typeOf(v).domainClass()));
+		}
+		return IScope.NULLSCOPE;
+	}
+
 	private IScope valueScope(EObject context) {
+		return Scopes.scopeFor(valueScopeElements(context));
+	}
+
+	private List<? extends EObject> valueScopeElements(EObject context) {
 		Situation situation = EcoreUtil2.getContainerOfType(context, Situation.class);
 		if (situation != null) {
 			// a situation's own objects, then those it inherits (state B extends A), nearest first
@@ -70,7 +95,7 @@ public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
 					objects.addAll(d.getObjects());
 				}
 			}
-			return Scopes.scopeFor(objects);
+			return objects;
 		}
 		Parameterized owner = EcoreUtil2.getContainerOfType(context, Parameterized.class);
 		// the variables of a 'forall (Room r)' the language does not have resolve, so that it is one finding, not many
@@ -84,11 +109,11 @@ public class TriadCommonScopeProvider extends AbstractTriadCommonScopeProvider {
 			goal.getUnsupported().forEach(u -> u.getParts().stream().filter(Parameter.class::isInstance).map(Parameter.class::cast).forEach(variables::add));
 		}
 		if (owner == null) {
-			return IScope.NULLSCOPE;
+			return List.of();
 		}
 		List<Parameter> visible = new ArrayList<>(owner.getParameters());
 		visible.addAll(variables);
-		return Scopes.scopeFor(visible);
+		return visible;
 	}
 
 	private IScope attributeScope(EObject context) {

@@ -6,7 +6,7 @@ import java.util.List;
 import org.triad.dsl.triad.BinaryExpression;
 import org.triad.dsl.triad.BinaryOperator;
 import org.triad.dsl.triad.BooleanLiteral;
-import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.MemberRef;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.IntLiteral;
 import org.triad.dsl.triad.DecimalLiteral;
@@ -97,7 +97,7 @@ public final class Postconditions {
 	/** Whether an expression is a plain value: a parameter or object, a literal (a negative number too), or an enumeration literal. */
 	public static boolean isValue(Expression e) {
 		return e instanceof ValueRef || e instanceof IntLiteral || e instanceof DecimalLiteral || e instanceof StringLiteral
-				|| e instanceof BooleanLiteral || e instanceof EnumLiteralRef
+				|| e instanceof BooleanLiteral || e instanceof MemberRef m && m.getOwner() instanceof org.triad.dsl.triad.Enumeration
 				|| e instanceof org.triad.dsl.triad.NegationExpression n && (n.getOperand() instanceof IntLiteral || n.getOperand() instanceof DecimalLiteral);
 	}
 

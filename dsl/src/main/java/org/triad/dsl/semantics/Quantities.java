@@ -29,7 +29,8 @@ import org.triad.dsl.typing.TriadTypeSystem;
  * the application's schema ({@code org.triad.runtime.schema.Quantities}).
  */
 public final class Quantities {
-	private final Set<Property> quantities = new LinkedHashSet<>();
+	/** Properties, and attributes read as {@code i.weight}. */
+	private final Set<EObject> quantities = new LinkedHashSet<>();
 
 	private Quantities() {
 	}
@@ -57,7 +58,7 @@ public final class Quantities {
 
 	/** Whether a numeric expression reads a quantity (directly or through arithmetic). */
 	public boolean readsQuantity(Expression e) {
-		return leaves(e).stream().anyMatch(l -> l instanceof PropertyCall c && quantities.contains(c.getProperty()));
+		return leaves(e).stream().anyMatch(l -> quantities.contains(read(l)));
 	}
 
 	private void compute(List<Action> actions, List<Goal> goals) {
@@ -118,11 +119,20 @@ public final class Quantities {
 	private boolean addCalls(List<Expression> leaves) {
 		boolean changed = false;
 		for (Expression l : leaves) {
-			if (l instanceof PropertyCall c && c.getProperty() != null && !c.getProperty().eIsProxy() && isNumeric(c)) {
-				changed |= quantities.add(c.getProperty());
+			EObject read = read(l);
+			if (read != null && !read.eIsProxy() && isNumeric(l)) {
+				changed |= quantities.add(read);
 			}
 		}
 		return changed;
+	}
+
+	/** The property a call reads, or the attribute {@code i.weight} reads; null for other expressions. */
+	private static EObject read(Expression e) {
+		if (e instanceof PropertyCall c) {
+			return c.getProperty();
+		}
+		return e instanceof org.triad.dsl.triad.MemberRef r && r.getMember() instanceof org.triad.dsl.triad.Attribute a ? a : null;
 	}
 
 	/**

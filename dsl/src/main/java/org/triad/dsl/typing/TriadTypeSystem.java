@@ -12,7 +12,8 @@ import org.triad.dsl.triad.BooleanLiteral;
 import org.triad.dsl.triad.DecimalLiteral;
 import org.triad.dsl.triad.DomainClass;
 import org.triad.dsl.triad.DomainTypeRef;
-import org.triad.dsl.triad.EnumLiteralRef;
+import org.triad.dsl.triad.MemberRef;
+import org.triad.dsl.triad.Enumeration;
 import org.triad.dsl.triad.Expression;
 import org.triad.dsl.triad.IntLiteral;
 import org.triad.dsl.triad.NotExpression;
@@ -73,20 +74,29 @@ public final class TriadTypeSystem {
 		if (e instanceof StringLiteral) {
 			return TriadType.STRING;
 		}
-		if (e instanceof EnumLiteralRef r) {
-			return TriadType.of(r.getEnumeration());
+		if (e instanceof MemberRef r) {
+			if (r.getOwner() instanceof Enumeration en) {
+				return TriadType.of(en);
+			}
+			return r.getMember() instanceof Attribute a && !a.eIsProxy() ? typeOf(a.getType()) : TriadType.UNKNOWN;
 		}
 		if (e instanceof PropertyCall c) {
 			Property p = c.getProperty();
 			return p == null || p.eIsProxy() ? TriadType.UNKNOWN : typeOf(p.getType());
 		}
 		if (e instanceof ValueRef v) {
-			if (v.getValue() instanceof Parameter p) {
-				return typeOf(p.getType());
-			}
-			if (v.getValue() instanceof SituationObject o && o.eContainer() instanceof ObjectDeclaration d) {
-				return TriadType.of(d.getType());
-			}
+			return typeOf(v.getValue());
+		}
+		return TriadType.UNKNOWN;
+	}
+
+	/** The type of a parameter or of a situation's object. */
+	public static TriadType typeOf(org.triad.dsl.triad.Value v) {
+		if (v instanceof Parameter p) {
+			return typeOf(p.getType());
+		}
+		if (v instanceof SituationObject o && o.eContainer() instanceof ObjectDeclaration d) {
+			return TriadType.of(d.getType());
 		}
 		return TriadType.UNKNOWN;
 	}

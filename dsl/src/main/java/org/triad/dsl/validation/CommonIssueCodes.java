@@ -20,6 +20,8 @@ public final class CommonIssueCodes {
 	public static final String UNKNOWN_ENUMERATION = "link.unknown-enumeration";
 	public static final String UNKNOWN_LITERAL = "link.unknown-literal";
 	public static final String UNKNOWN_ATTRIBUTE = "link.unknown-attribute";
+	/** {@code r.weight} where {@code weight} is an attribute of another class than r's (and not of r's superclasses). */
+	public static final String ATTRIBUTE_OF_OTHER_CLASS = "link.attribute-of-other-class";
 	public static final String UNKNOWN_NAME = "link.unknown-name";
 	/** {@code state B extends A} where the application has no situation {@code A}. */
 	public static final String UNKNOWN_SITUATION = "link.unknown-situation";
@@ -36,11 +38,7 @@ public final class CommonIssueCodes {
 	public static final String NOT_NUMERIC = "expr.not-numeric";
 	/** A Boolean property passed as the argument of a property: the planner passes objects and values, not conditions. */
 	public static final String CONDITION_AS_ARGUMENT = "plan.condition-as-argument";
-	/**
-	 * {@code b.weight}: an attribute of an object read in a condition. Conditions read properties of actors;
-	 * the finding says which world property to declare instead.
-	 */
-	public static final String ATTRIBUTE_READ = "expr.attribute-read";
+	// "expr.attribute-read" (an attribute read at all) is retired: 'b.weight' reads the attribute now
 	/** A division by a divisor that is zero ({@code x / 0}, {@code x / (2 - 2)}). */
 	public static final String DIVISION_BY_ZERO = "expr.division-by-zero";
 	/** Arithmetic on literals whose result is not a finite number of its type (an int past 2147483647, a double past 1.8e308). */

@@ -27,7 +27,8 @@ public class TriadGoalValidator extends AbstractTriadGoalValidator {
 			if (isDuplicate(p)) {
 				continue; // reported as a duplicate; references resolve to the first one
 			}
-			boolean used = EcoreUtil2.getAllContentsOfType(goal, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
+			boolean used = EcoreUtil2.getAllContentsOfType(goal, ValueRef.class).stream().anyMatch(r -> r.getValue() == p)
+					|| EcoreUtil2.getAllContentsOfType(goal, org.triad.dsl.triad.MemberRef.class).stream().anyMatch(r -> r.getOwner() == p);
 			if (!used) {
 				warning("parameter '" + p.getName() + "' of goal '" + goal.getName() + "' is not used", p, P.getNamedElement_Name(),
 						GoalIssueCodes.UNUSED_PARAMETER);

@@ -56,7 +56,8 @@ public class TriadTaskValidator extends AbstractTriadTaskValidator {
 			if (isDuplicate(p)) {
 				continue; // reported as a duplicate; references resolve to the first one
 			}
-			boolean used = EcoreUtil2.getAllContentsOfType(task, ValueRef.class).stream().anyMatch(r -> r.getValue() == p);
+			boolean used = EcoreUtil2.getAllContentsOfType(task, ValueRef.class).stream().anyMatch(r -> r.getValue() == p)
+					|| EcoreUtil2.getAllContentsOfType(task, org.triad.dsl.triad.MemberRef.class).stream().anyMatch(r -> r.getOwner() == p);
 			if (!used) {
 				warning("parameter '" + p.getName() + "' of task '" + task.getName() + "' is not used", p, P.getNamedElement_Name(),
 						TaskIssueCodes.UNUSED_PARAMETER);

@@ -48,6 +48,10 @@ class DomainTypeTemplate {
 
 					«attributeAccessors(a, im)»
 				«ENDFOR»
+				«IF !c.attributes.empty»
+
+					«attributeByName(c, im)»
+				«ENDIF»
 			}
 		'''
 	}
@@ -64,6 +68,19 @@ class DomainTypeTemplate {
 
 		public void «names.setter(a)»(«im.ref(names.javaType(a.type))» value) {
 			this.«names.field(a)» = value;
+		}
+	'''
+
+	/** What the runtime reads when a model reads an attribute ({@code i.weight}). */
+	private def String attributeByName(DomainClass c, Imports im) '''
+		@«im.ref("java.lang.Override")»
+		public «im.ref("java.lang.Object")» attribute(«im.ref("java.lang.String")» attribute) {
+			return switch (attribute) {
+				«FOR a : c.attributes»
+					case «JavaLiterals.string(a.name)» -> «names.getter(a)»();
+				«ENDFOR»
+				default -> super.attribute(attribute);
+			};
 		}
 	'''
 

@@ -2,7 +2,7 @@ package org.triad.generator.java
 
 import org.triad.dsl.triad.BooleanLiteral
 import org.triad.dsl.triad.DecimalLiteral
-import org.triad.dsl.triad.EnumLiteralRef
+import org.triad.dsl.triad.MemberRef
 import org.triad.dsl.triad.Expression
 import org.triad.dsl.triad.GoalReference
 import org.triad.dsl.triad.IntLiteral
@@ -96,7 +96,7 @@ class TaskTemplate {
 
 	def dispatch String argument(StringLiteral l, Imports im) '''«JavaLiterals.string(l.value)»'''
 
-	def dispatch String argument(EnumLiteralRef r, Imports im) '''«im.ref(names.qualifiedDomainClass(r.enumeration))».«names.enumConstant(r.literal)»'''
+	def dispatch String argument(MemberRef r, Imports im) '''«im.ref(names.qualifiedDomainClass(r.owner as org.triad.dsl.triad.Enumeration))».«names.enumConstant(r.member as org.triad.dsl.triad.EnumLiteral)»'''
 
 	def dispatch String argument(Expression e, Imports im) {
 		throw new IllegalArgumentException("a task argument must be a task parameter or a literal, not " + e.eClass.name)

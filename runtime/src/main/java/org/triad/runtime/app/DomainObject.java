@@ -24,6 +24,15 @@ public abstract class DomainObject {
     /** The name of this object's class in the class diagram. */
     public abstract String typeName();
 
+    /**
+     * The value of one of its class's attributes (declared in its class or a superclass), for models that
+     * read it ({@code i.weight}); null when the object has no such attribute or it is unset. Generated
+     * domain classes answer from their fields.
+     */
+    public Object attribute(String attribute) {
+        return null;
+    }
+
     @Override
     public final boolean equals(Object o) {
         return o instanceof DomainObject other && other.typeName().equals(typeName()) && other.name.equals(name);

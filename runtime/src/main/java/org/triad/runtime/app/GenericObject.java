@@ -30,4 +30,9 @@ public final class GenericObject extends DomainObject {
 	public Map<String, Object> attributes() {
 		return attributes;
 	}
+
+	@Override
+	public Object attribute(String attribute) {
+		return attributes.get(attribute);
+	}
 }

@@ -77,6 +77,15 @@ public final class AppSchema {
 		return Optional.ofNullable(properties.get(actor + "." + property));
 	}
 
+	/**
+	 * Whether a property is a class's attribute read by the models ({@code i.weight} is the property
+	 * {@code Item.weight(i)} of class Item, its "actor"): its values are the objects' own, never changed by an action.
+	 */
+	public boolean isAttribute(String actor, String property) {
+		TypeSchema t = types.get(actor);
+		return t != null && !t.isEnum() && properties.containsKey(actor + "." + property);
+	}
+
 	public Optional<ActionSchema> action(String actor, String action) {
 		return Optional.ofNullable(actions.get(actor + "." + action));
 	}

@@ -3,8 +3,10 @@ package org.triad.runtime.schema;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 import org.triad.runtime.app.Atom;
+import org.triad.runtime.app.DomainObject;
 import org.triad.runtime.app.EnumValue;
 import org.triad.runtime.app.State;
 import org.triad.runtime.app.Values;
@@ -49,6 +51,9 @@ public final class Evaluator {
 			Atom atom = atom(c, state, binding);
 			boolean isBoolean = schema.property(c.actor(), c.property()).map(PropertySchema::isBoolean)
 					.orElseThrow(() -> new ModelEvaluationException("unknown property " + c.actor() + "." + c.property()));
+			if (schema.isAttribute(c.actor(), c.property())) {
+				return attribute(atom, state);
+			}
 			return isBoolean ? state.holds(atom) : state.valueOf(atom).orElse(null);
 		}
 		if (e instanceof Expr.Var v) {
@@ -100,6 +105,16 @@ public final class Evaluator {
 
 	private static boolean isIntegral(Number n) {
 		return n instanceof Integer || n instanceof Long || n instanceof Short || n instanceof Byte;
+	}
+
+	/** An attribute's value: as the state states it, else the object's own ({@code Item gauze { weight = 1; }}). */
+	private static Object attribute(Atom atom, State state) {
+		Optional<Object> stated = state.valueOf(atom);
+		if (stated.isPresent()) {
+			return stated.get();
+		}
+		Object value = atom.args().get(0) instanceof DomainObject o ? o.attribute(atom.property()) : null;
+		return value == null ? null : Values.canonical(value);
 	}
 
 	/** The atom a call denotes in a state, its arguments evaluated. */

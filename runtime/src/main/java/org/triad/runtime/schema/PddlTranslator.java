@@ -189,7 +189,7 @@ public final class PddlTranslator {
 		}
 		List<Formula.Atom> init = new ArrayList<>();
 		List<Problem.NumericFact> numericInit = new ArrayList<>();
-		for (Map.Entry<Atom, Object> e : state.values().entrySet()) {
+		for (Map.Entry<Atom, Object> e : withAttributes(state).entrySet()) {
 			Atom atom = e.getKey();
 			PropertySchema p = schema.property(atom.actor(), atom.property()).orElse(null);
 			if (p == null) {
@@ -285,6 +285,38 @@ public final class PddlTranslator {
 		Problem problem = new Problem(PddlNames.lower(goalName).replaceAll("[^a-z0-9-]", "-"), domainName, objects, init, numericInit, goal,
 				metric);
 		return new Task(domain, problem, names, actions);
+	}
+
+	/**
+	 * The state's values, and the values of the attributes the models read ({@code i.weight}) taken from the objects
+	 * themselves where the state does not state them. A quantity's attribute must have a value: a planner cannot
+	 * compute with a number it does not know.
+	 */
+	private Map<Atom, Object> withAttributes(State state) {
+		Map<Atom, Object> values = new LinkedHashMap<>(state.values());
+		for (PropertySchema p : schema.properties()) {
+			if (!schema.isAttribute(p.actor(), p.name())) {
+				continue;
+			}
+			for (DomainObject o : state.objects().values()) {
+				if (!schema.isSubtype(o.typeName(), p.actor())) {
+					continue;
+				}
+				Atom atom = new Atom(p.actor(), p.name(), List.of(o));
+				if (values.containsKey(atom)) {
+					continue;
+				}
+				Object value = o.attribute(p.name());
+				if (value == null && quantities.isQuantity(p.actor(), p.name())) {
+					throw new PddlTranslationException(o.typeName() + " " + o.name() + " has no " + p.name() + ", an attribute of " + p.actor()
+							+ " the models compute with: give it one, e.g. '" + o.typeName() + " " + o.name() + " { " + p.name() + " = ...; };'");
+				}
+				if (value != null) {
+					values.put(atom, org.triad.runtime.app.Values.canonical(value));
+				}
+			}
+		}
+		return values;
 	}
 
 	private static Set<String> usedPrimitiveTypes(PddlNames names) {

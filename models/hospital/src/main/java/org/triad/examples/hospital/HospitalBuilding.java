@@ -12,7 +12,6 @@ import org.triad.sim.Contact;
 import org.triad.sim.PersonSpec;
 import org.triad.sim.Rect;
 import org.triad.sim.Robot;
-import org.triad.sim.RobotSpec;
 import org.triad.sim.Simulation;
 import org.triad.sim.SimulationClock;
 import org.triad.sim.Vec2;
@@ -71,14 +70,14 @@ public final class HospitalBuilding {
             }
             Robot robot = null;
             if (i == 0) {
-                robot = sim.addRobot(name, HospitalFloor.ROBOT_START, RobotSpec.defaults());
+                robot = sim.addRobot(name, HospitalFloor.ROBOT_START, HospitalObjects.courierSpec());
             }
             while (robot == null) {
                 if (spot >= spots.size()) {
                     throw new IllegalArgumentException("the hospital has room for " + i + " couriers, not " + names.size());
                 }
                 try {
-                    robot = sim.addRobot(name, spots.get(spot++), RobotSpec.defaults());
+                    robot = sim.addRobot(name, spots.get(spot++), HospitalObjects.courierSpec());
                 } catch (IllegalArgumentException occupied) {
                     // someone stands there: the next spot
                 }

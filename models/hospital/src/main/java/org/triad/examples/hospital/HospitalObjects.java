@@ -36,6 +36,14 @@ public final class HospitalObjects {
         return new org.triad.sim.Battery(JOULES_PER_METRE * 100 / DRAIN_PERCENT_PER_METRE, JOULES_PER_METRE, CHARGING_WATTS, 1);
     }
 
+    /**
+     * A simulated courier: the simulation's default robot, whose cabinet holds as many items as the payload bears
+     * (every item weighs at least 1 kg), so that what it may carry is the models' rule, their weights summed.
+     */
+    public static org.triad.sim.RobotSpec courierSpec() {
+        return org.triad.sim.RobotSpec.defaults().withCapacity(PAYLOAD_KG);
+    }
+
     private final Map<String, WayPoint> wayPoints = new LinkedHashMap<>();
     private final Map<String, Room> rooms = new LinkedHashMap<>();
     private final Map<String, Item> items = new LinkedHashMap<>();

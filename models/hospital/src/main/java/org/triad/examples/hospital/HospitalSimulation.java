@@ -16,7 +16,6 @@ import org.triad.sim.GifReplay;
 import org.triad.sim.HtmlReplay;
 import org.triad.sim.PersonSpec;
 import org.triad.sim.Robot;
-import org.triad.sim.RobotSpec;
 import org.triad.sim.Simulation;
 import org.triad.sim.TracePicture;
 import org.triad.sim.Vec2;
@@ -58,7 +57,7 @@ public final class HospitalSimulation {
     public HospitalSimulation(long seed, boolean recordTrace) {
         sim = Simulation.builder(floor.plan()).seed(seed).recordTrace(recordTrace).build();
         floor.equip(sim);
-        Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, RobotSpec.defaults());
+        Robot robot = sim.addRobot(ROBOT, HospitalFloor.ROBOT_START, HospitalObjects.courierSpec());
         robot.setBattery(HospitalObjects.courierBattery());
         // the models' dock (Building.dock(lobby)), where the courier charges
         sim.addDock(HospitalBuilding.DOCK, floor.plan().waypoint(HospitalBuilding.DOCK).position());

@@ -83,12 +83,6 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         return sim.docks().containsKey(w.name());
     }
 
-    /** The item's weight, kg (its class attribute). */
-    @Override
-    public int weight(Item i) {
-        return i.getWeight();
-    }
-
     /** The item lies (nobody carries it, nobody took it away) in the room or at the corridor waypoint. */
     @Override
     public boolean itemAt(Item i, WayPoint w) {

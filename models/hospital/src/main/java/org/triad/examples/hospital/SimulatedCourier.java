@@ -180,9 +180,10 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
         return robot.carried().stream().anyMatch(it -> it.name().equals(i.name()));
     }
 
+    /** The weights of the items it carries, summed, kg. */
     @Override
-    public boolean handEmpty() {
-        return robot.carried().isEmpty();
+    public int load() {
+        return robot.carried().stream().mapToInt(it -> objects.item(it.name()).getWeight()).sum();
     }
 
     /**

@@ -15,7 +15,7 @@ final class HospitalFactsheet {
     }
 
     static ObjectNode of(String serial, int headerId) {
-        RobotSpec spec = RobotSpec.defaults();
+        RobotSpec spec = org.triad.examples.hospital.HospitalObjects.courierSpec();
         ObjectNode f = VdaJson.mapper().createObjectNode();
         f.put("headerId", headerId).put("timestamp", HeaderIds.now()).put("version", Header.VERSION)
                 .put("manufacturer", MasterControl.TRIAD).put("serialNumber", serial);

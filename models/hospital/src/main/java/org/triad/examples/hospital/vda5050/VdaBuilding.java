@@ -89,12 +89,6 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
         return w.name().equals(org.triad.examples.hospital.HospitalBuilding.DOCK);
     }
 
-    /** The item's weight, kg (its class attribute). */
-    @Override
-    public int weight(Item i) {
-        return i.getWeight();
-    }
-
     @Override
     public boolean itemAt(Item i, WayPoint w) {
         return knowledge.itemAt(i.name()).map(w.name()::equals).orElse(false);

@@ -117,9 +117,10 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return state().carries(i.name());
     }
 
+    /** The weights of the loads the AGV reports, summed, kg (each load is an item, its {@code loadId} the item's name). */
     @Override
-    public boolean handEmpty() {
-        return state().loads() == null || state().loads().isEmpty();
+    public int load() {
+        return state().loads() == null ? 0 : state().loads().stream().mapToInt(l -> objects.item(l.loadId()).getWeight()).sum();
     }
 
     @Override
