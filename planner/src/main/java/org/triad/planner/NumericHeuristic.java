@@ -482,18 +482,17 @@ final class NumericHeuristic {
      * plan whose cost plus this bound reaches the best plan's cost cannot improve on it. Infinite when no
      * relaxed plan reaches the goal's facts.
      */
-    double lowerBound(BitSet facts, boolean unit) {
+    double lowerBound(BitSet facts, double[] values, boolean unit) {
+        if (projection.coversGoal()) {
+            // lookups, as cheap as the cache and reading the state's charge: neither cached nor counted as
+            // computed (the budgets that count those stay for h_max's)
+            return projection.bound(facts, values, unit ? unitCosts() : opCost);
+        }
         java.util.Map<BitSet, Double> cache = unit ? unitBounds : costBounds;
         Double known = cache.get(facts);
         if (known != null) return known;
-        double h;
-        if (projection.coversGoal()) {
-            // lookups, as cheap as the cache: not counted as computed (the budgets that count those stay for h_max's)
-            h = projection.bound(facts, unit ? unitCosts() : opCost);
-        } else {
-            h = computeLowerBound(facts, unit);
-            computed++;
-        }
+        double h = computeLowerBound(facts, unit);
+        computed++;
         if (cache.size() < CACHED_BOUNDS) cache.put((BitSet) facts.clone(), h);
         return h;
     }
@@ -541,7 +540,7 @@ final class NumericHeuristic {
         double h = 0;
         for (NumericTask.Cond c : goals) if (c instanceof NumericTask.Fact f && f.positive()) h = Math.max(h, fcost[f.id()]);
         // both are lower bounds on the same cost, so their maximum is one
-        if (h < Double.POSITIVE_INFINITY && projection.applies()) h = Math.max(h, projection.bound(facts, own));
+        if (h < Double.POSITIVE_INFINITY && projection.applies()) h = Math.max(h, projection.bound(facts, null, own)); // by the facts alone: it is cached by them
         return h;
     }
 

@@ -295,7 +295,7 @@ final class NumericSearch {
             return Long.compare(a.order, b.order);
         });
         double base = task.metricValue(init.values);
-        double f0 = additive > 0 ? additive * h.additive(init.facts, unit) : weight == 0 ? h0 : exact ? h.lowerBound(init.facts, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
+        double f0 = additive > 0 ? additive * h.additive(init.facts, unit) : weight == 0 ? h0 : exact ? h.lowerBound(init.facts, init.values, unit) : weight * (allGoals ? h0 : h.estimateCost(init.facts, init.values));
         nodes.add(new Node(init, -1, -1, 0, f0, h0, 0));
         seen.put(init, 0);
         if (frontier != null) frontier.computeIfAbsent(new Key(init.facts, init.values, dominance.outsideRest), k -> new ArrayList<>()).add(0);
@@ -339,7 +339,7 @@ final class NumericSearch {
                     rivals = frontier.computeIfAbsent(new Key(next.facts, next.values, dominance.outsideRest), k -> new ArrayList<>());
                     if (dominated(rivals, nodes, seen, dominance, next, g)) continue;
                 }
-                double lb = prune || exact ? h.lowerBound(next.facts, unit) : 0;
+                double lb = prune || exact ? h.lowerBound(next.facts, next.values, unit) : 0;
                 if (prune && g + lb >= limit) continue;
                 if (lb == Double.POSITIVE_INFINITY) {
                     seen.put(next, -1); // the goal's facts are out of reach even without deletes

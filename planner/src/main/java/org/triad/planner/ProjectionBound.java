@@ -79,6 +79,7 @@ final class ProjectionBound {
             goalFacts.add(f.id());
         }
         covers = !goals.isEmpty() && projections.size() == goals.size();
+        resource = projections.isEmpty() ? null : Resource.find(task);
     }
 
     /**
@@ -90,6 +91,70 @@ final class ProjectionBound {
     }
 
     private final boolean covers;
+    /** The charge the projections account for, or null. */
+    private final Resource resource;
+
+    /**
+     * A fluent spent like a battery: every instance that changes it either decreases it by a constant
+     * {@code a > 0} and needs it at least {@code a} first (a top-level {@code >=} against a constant; so it
+     * never falls below 0), or is a refill (any other change: a recharge). Without a refill a plan then
+     * spends at most the charge it starts with, and after its last refill at most the {@code ceiling}.
+     */
+    record Resource(int fluent, double[] drain, boolean[] refill, double ceiling) {
+        /** The most a refill leaves: the largest constant one assigns; infinite when one does anything else. */
+        private static double ceiling(NumericTask task, int v, boolean[] refill) {
+            double c = Double.NEGATIVE_INFINITY;
+            for (int o = 0; o < refill.length; o++) {
+                if (!refill[o]) continue;
+                for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                    for (NumericTask.NumEffect n : e.numeric()) {
+                        if (n.fluent() != v) continue;
+                        if (!n.kind().equals("assign") || !(n.value() instanceof NumericTask.Num k)) return Double.POSITIVE_INFINITY;
+                        c = Math.max(c, k.value());
+                    }
+                }
+            }
+            return c;
+        }
+
+        static Resource find(NumericTask task) {
+            int no = task.ops.size();
+            for (int v = 0; v < task.fluentNames.size(); v++) {
+                if (task.accumulator[v]) continue;
+                double[] drain = new double[no];
+                boolean[] refill = new boolean[no];
+                boolean ok = true;
+                boolean consumed = false;
+                for (int o = 0; o < no && ok; o++) {
+                    NumericTask.Op op = task.ops.get(o);
+                    for (NumericTask.Effects e : op.effects()) {
+                        for (NumericTask.NumEffect n : e.numeric()) {
+                            if (n.fluent() != v) continue;
+                            double a = !(n.value() instanceof NumericTask.Num k) ? Double.NaN
+                                    : n.kind().equals("decrease") ? k.value() : n.kind().equals("increase") ? -k.value() : Double.NaN;
+                            if (a > 0 && e.when() == NumericTask.TRUE && drain[o] == 0 && needsAtLeast(op.pre(), v, a)) {
+                                drain[o] = a;
+                                consumed = true;
+                            } else if (a > 0 || a == 0) {
+                                if (a > 0) ok = false; // a conditional or unguarded drain: the charge may go below 0
+                            } else refill[o] = true;
+                        }
+                    }
+                    if (drain[o] > 0 && refill[o]) ok = false;
+                }
+                if (ok && consumed && Double.isFinite(task.initValues[v])) return new Resource(v, drain, refill, ceiling(task, v, refill));
+            }
+            return null;
+        }
+
+        private static boolean needsAtLeast(NumericTask.Cond pre, int v, double a) {
+            for (NumericTask.Cond c : pre instanceof NumericTask.All all ? all.parts() : List.of(pre)) {
+                if (c instanceof NumericTask.Cmp m && m.left() instanceof NumericTask.Var x && x.fluent() == v && m.right() instanceof NumericTask.Num k
+                        && (m.op().equals(">=") || m.op().equals(">")) && k.value() >= a) return true;
+            }
+            return false;
+        }
+    }
 
     /** Whether some goal fact has a projection (else {@link #bound} is always 0). */
     boolean applies() {
@@ -99,12 +164,14 @@ final class ProjectionBound {
     /**
      * The largest over the goal facts of the cheapest way to it in its projection from {@code facts},
      * each instance costing {@code own[o]} (at least 0); {@link Double#POSITIVE_INFINITY} when one has no way.
+     * With {@code values} (else null), a charge too low for every way without a recharge makes it the
+     * cheapest way through one ({@link Resource}).
      */
-    double bound(BitSet facts, double[] own) {
+    double bound(BitSet facts, double[] values, double[] own) {
         double h = 0;
         for (Projection p : projections) {
             if (facts.get(p.goal)) continue;
-            h = Math.max(h, p.cheapest(facts, own));
+            h = Math.max(h, p.cheapest(facts, values, own));
             if (h == Double.POSITIVE_INFINITY) break;
         }
         return h;
@@ -358,7 +425,7 @@ final class ProjectionBound {
             }
         }
 
-        double cheapest(BitSet facts, double[] own) {
+        double cheapest(BitSet facts, double[] values, double[] own) {
             int m0 = -1, x0 = otherFacts.length == 0 ? 0 : -1;
             for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
                 if (f < ownValue.length && ownValue[f] >= 0) m0 = ownValue[f];
@@ -366,21 +433,76 @@ final class ProjectionBound {
             }
             if (m0 < 0 || x0 < 0) return 0; // not a state the groups describe: no bound
             if (costsUsed != own) {
-                toGoal = backwards(own);
+                toGoal = backwards(own, null);
                 costsUsed = own;
+                if (resource != null) {
+                    // the least charge any way to the goal spends, and the cheapest way through a refill
+                    leastDrain = backwards(resource.drain(), null);
+                    viaRefill = backwards(own, refillSeeds(own));
+                }
             }
-            return toGoal[m0 * width + x0];
+            int p = m0 * width + x0;
+            if (values != null && resource != null && values[resource.fluent()] < leastDrain[p] - 1e-9) return Math.max(toGoal[p], viaRefill[p]);
+            return toGoal[p];
         }
 
-        /** Dijkstra from every pair with the goal's value, along the reversed transitions. */
-        private double[] backwards(double[] own) {
+        private double[] leastDrain;
+        private double[] viaRefill;
+
+        /** Per pair where a refill applies (its group conditions hold there): its cost plus the way on from where it leaves. */
+        private double[] refillSeeds(double[] own) {
+            int pairs = values * width;
+            double[] seed = new double[pairs];
+            Arrays.fill(seed, Double.POSITIVE_INFINITY);
+            for (int o = 0; o < task.ops.size(); o++) {
+                if (!resource.refill()[o]) continue;
+                int no = -1, nx = -1, so = -1, sx = -1;
+                for (int f : preFacts[o]) {
+                    if (ownValue[f] >= 0) no = ownValue[f];
+                    if (otherValue[f] >= 0) nx = otherValue[f];
+                }
+                for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                    for (int a : e.adds()) {
+                        if (a < ownValue.length && ownValue[a] >= 0) so = ownValue[a];
+                        if (a < otherValue.length && otherValue[a] >= 0) sx = otherValue[a];
+                    }
+                }
+                for (int m = 0; m < values; m++) {
+                    if (no >= 0 && no != m) continue;
+                    for (int x = 0; x < width; x++) {
+                        if (nx >= 0 && nx != x) continue;
+                        int after = (so >= 0 ? so : m) * width + (sx >= 0 ? sx : x);
+                        // the plan's last refill leaves at most the ceiling, which must then suffice for the rest
+                        if (leastDrain[after] > resource.ceiling() + 1e-9) continue;
+                        seed[m * width + x] = Math.min(seed[m * width + x], own[o] + toGoal[after]);
+                    }
+                }
+            }
+            return seed;
+        }
+
+        /**
+         * Dijkstra along the reversed transitions, each instance weighing {@code weight[o]}, from every pair
+         * with the goal's value at 0 ({@code seeds} null) or from every pair at its seed.
+         */
+        private double[] backwards(double[] weight, double[] seeds) {
+            double[] own = weight;
             int pairs = values * width;
             double[] d = new double[pairs];
             Arrays.fill(d, Double.POSITIVE_INFINITY);
             NodeHeap heap = new NodeHeap();
-            for (int x = 0; x < width; x++) {
-                d[goalValue * width + x] = 0;
-                heap.push(0, goalValue * width + x);
+            if (seeds == null) {
+                for (int x = 0; x < width; x++) {
+                    d[goalValue * width + x] = 0;
+                    heap.push(0, goalValue * width + x);
+                }
+            } else {
+                for (int q = 0; q < pairs; q++) {
+                    if (seeds[q] < Double.POSITIVE_INFINITY) {
+                        d[q] = seeds[q];
+                        heap.push(Double.doubleToLongBits(seeds[q]), q);
+                    }
+                }
             }
             while (!heap.isEmpty()) {
                 double c = Double.longBitsToDouble(heap.topKey());

@@ -23,7 +23,8 @@ class ProjectionBoundTest {
             (define (domain courier)
               (:requirements :strips :typing :fluents)
               (:types place robot box)
-              (:predicates (at ?r - robot ?p - place) (adj ?a ?b - place) (box-at ?x - box ?p - place) (carries ?r - robot ?x - box) (empty ?r - robot))
+              (:predicates (at ?r - robot ?p - place) (adj ?a ?b - place) (box-at ?x - box ?p - place) (carries ?r - robot ?x - box) (empty ?r - robot)
+                (dock ?p - place))
               (:functions (battery) (dist ?a ?b - place) (total-cost))
               (:action move :parameters (?r - robot ?a ?b - place)
                 :precondition (and (at ?r ?a) (adj ?a ?b) (>= (battery) (dist ?a ?b)))
@@ -33,23 +34,44 @@ class ProjectionBoundTest {
                 :effect (and (carries ?r ?x) (not (box-at ?x ?p)) (not (empty ?r)) (increase (total-cost) 1)))
               (:action drop :parameters (?r - robot ?x - box ?p - place)
                 :precondition (and (at ?r ?p) (carries ?r ?x))
-                :effect (and (box-at ?x ?p) (not (carries ?r ?x)) (empty ?r) (increase (total-cost) 1))))""", "courier.pddl");
+                :effect (and (box-at ?x ?p) (not (carries ?r ?x)) (empty ?r) (increase (total-cost) 1)))
+              (:action charge :parameters (?r - robot ?p - place) :precondition (and (at ?r ?p) (dock ?p))
+                :effect (and (assign (battery) 100) (increase (total-cost) 1))))""", "courier.pddl");
 
     private static Problem problem(String robots, String at) {
+        return problem(robots, at, 100);
+    }
+
+    private static Problem problem(String robots, String at, int battery) {
         return PddlParser.parseProblem("""
                 (define (problem p) (:domain courier)
                   (:objects a b c d - place %s - robot parcel - box)
-                  (:init %s (box-at parcel d) (adj a b) (adj b a) (adj b c) (adj c b) (adj c d) (adj d c)
+                  (:init %s (box-at parcel d) (dock c) (adj a b) (adj b a) (adj b c) (adj c b) (adj c d) (adj d c)
                     (= (dist a b) 10) (= (dist b a) 10) (= (dist b c) 10) (= (dist c b) 10) (= (dist c d) 10) (= (dist d c) 10)
-                    (= (battery) 100) (= (total-cost) 0))
-                  (:goal (box-at parcel a)) (:metric minimize (total-cost)))""".formatted(robots, at), "p.pddl");
+                    (= (battery) %d) (= (total-cost) 0))
+                  (:goal (box-at parcel a)) (:metric minimize (total-cost)))""".formatted(robots, at, battery), "p.pddl");
     }
 
     private static double initialBound(Problem p) {
         NumericTask task = new NumericTask(DOMAIN, p);
         BitSet init = new BitSet();
         task.initFacts.forEach(init::set);
-        return new NumericHeuristic(task).lowerBound(init, false);
+        return new NumericHeuristic(task).lowerBound(init, task.initValues, false);
+    }
+
+    /**
+     * With 15 % the 50 m of both legs need a recharge: the bound is the cheapest way through the dock at
+     * c (10 m, the recharge, then the 42 of the delivery from c), the plan's cost; the charge is read from
+     * the state, so the same places with a full battery are bounded by the legs alone.
+     */
+    @Test
+    void aChargeTooLowForEveryWayAddsTheWayThroughADock() {
+        Problem low = problem("r1", "(at r1 b) (empty r1)", 15);
+        assertEquals(53, initialBound(low), 1e-9);
+        SolveResult r = NumericSearch.solve(DOMAIN, low, Duration.ofSeconds(60));
+        assertTrue(r.isSolved(), r.message());
+        assertEquals(53, PlanValidator.metricValue(DOMAIN, low, r.plan()).orElseThrow(), 1e-9);
+        assertTrue(r.plan().toPddl().contains("(charge r1 c)"), r.plan().toPddl());
     }
 
     @Test
@@ -67,7 +89,7 @@ class ProjectionBoundTest {
         NumericTask task = new NumericTask(DOMAIN, two);
         BitSet init = new BitSet();
         task.initFacts.forEach(init::set);
-        double h = new NumericHeuristic(task).lowerBound(init, false);
+        double h = new NumericHeuristic(task).lowerBound(init, task.initValues, false);
         // r2 fetches the box (10 + 1) and brings it to a (30 + 1): the bound must not exceed that
         assertTrue(h > 0 && h <= 42, "h " + h);
         SolveResult r = NumericSearch.solve(DOMAIN, two, Duration.ofSeconds(60));
