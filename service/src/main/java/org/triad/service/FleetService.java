@@ -66,6 +66,15 @@ public final class FleetService implements AutoCloseable {
     private volatile java.time.Duration congestionPause = java.time.Duration.ofSeconds(10);
     /** Tasks queued again after congestion, with when they may run again. */
     private final Map<Long, Instant> notBefore = new ConcurrentHashMap<>();
+    /**
+     * Robots whose last runs congestion ended, with until when they rest, and how many such runs in a row: a robot that
+     * stands in a jam and takes the next task at once meets the same refusal within a second (RefArc's re-plans too) and
+     * burns through the queue (the mixed benchmark: one courier shut in the storage room ended a task every few seconds).
+     */
+    private final Map<String, Instant> resting = new ConcurrentHashMap<>();
+    private final Map<String, Integer> jammedInARow = new ConcurrentHashMap<>();
+    /** At most this many pauses a robot rests after congestion ended its runs in a row. */
+    private static final int MAX_REST_PAUSES = 6;
 
     private final TaskCatalog catalog;
     private final TaskStore store;
@@ -815,7 +824,9 @@ public final class FleetService implements AutoCloseable {
      */
     private Choice next(List<Long> nowWaiting) {
         sendToCharge(nowWaiting);
-        List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle()).toList();
+        Instant restNow = clock.instant();
+        List<RobotLane> idle = lanes.values().stream().filter(l -> l.online() && l.idle())
+                .filter(l -> !resting.getOrDefault(l.name(), Instant.MIN).isAfter(restNow)).toList();
         if (idle.isEmpty()) {
             return null;
         }
@@ -891,6 +902,13 @@ public final class FleetService implements AutoCloseable {
         Instant now = clock.instant();
         synchronized (lock) {
             if (!queue.contains(choice.task()) || !best.idle() || !best.online()) {
+                return;
+            }
+            if (notBefore.containsKey(choice.task()) && bestCost >= Integer.MAX_VALUE - 1) {
+                // queued again after congestion, and no idle robot can plan its next goal from where it stands (the robot
+                // that ran it may carry its objects): it waits for one that can, and the others' tasks go first
+                java.time.Duration wait = congestionPause.compareTo(java.time.Duration.ofSeconds(1)) < 0 ? java.time.Duration.ofSeconds(1) : congestionPause;
+                notBefore.put(choice.task(), now.plus(wait));
                 return;
             }
             if (claims.holder(choice.task(), claimed(choice.task(), choice.call())).isPresent()) {
@@ -1012,6 +1030,8 @@ public final class FleetService implements AutoCloseable {
                             }
                         }
                         claimed.remove(taskId);
+                        jammedInARow.remove(lane.name());
+                        resting.remove(lane.name());
                         lane.completed();
                     }
                     lane.finished(taskId);
@@ -1050,8 +1070,10 @@ public final class FleetService implements AutoCloseable {
 
     /**
      * A task that the building's congestion ended goes back to the queue, at most {@link #CONGESTION_REQUEUES} times (counted
-     * on its timeline, so a restart does not reset it): on the robot that ran it (it may carry the task's objects, and
-     * RefArc re-plans from where it stands), not before a pause that grows with each time. Set before the abort is written,
+     * on its timeline, so a restart does not reset it), not before a pause that grows with each time, on an idle robot that
+     * can plan its next goal from where it stands (the one that ran it, when it carries the task's objects, which stay
+     * claimed by the task meanwhile); the robot that ran it rests a pause per run that congestion ended in a row (at most
+     * {@link #MAX_REST_PAUSES}), so that it does not meet the same jam with the next task at once. Set before the abort is written,
      * so that no look at the database queues it without them. Returns the timeline's text, or null when the bound is
      * reached (the task ends aborted). Call with the lock held.
      */
@@ -1061,10 +1083,13 @@ public final class FleetService implements AutoCloseable {
             return null;
         }
         java.time.Duration pause = congestionPause.multipliedBy(before + 1);
-        preferred.put(taskId, lane.name());
         notBefore.put(taskId, now.plus(pause));
+        int jams = Math.min(MAX_REST_PAUSES, jammedInARow.merge(lane.name(), 1, Integer::sum));
+        java.time.Duration rest = congestionPause.multipliedBy(jams);
+        resting.put(lane.name(), now.plus(rest));
         return "the building's congestion ended the run, not the robot: queued again (" + (before + 1) + " of " + CONGESTION_REQUEUES
-                + "), for " + lane.name() + " in " + pause.toSeconds() + " s: " + abort.reason();
+                + "), to run in " + pause.toSeconds() + " s on an idle robot that can plan it from where it stands; " + lane.name()
+                + " rests " + rest.toSeconds() + " s: " + abort.reason();
     }
 
     /** The pause before a task queued again after congestion runs again (times the how-manieth time); tests shorten it. */

@@ -64,7 +64,7 @@ public final class BuildingBenchmark {
                 }
                 Thread.sleep(100);
             }
-            try (TriadService s = TriadService.start(new TriadService.Options(models, List.of("vda5050:" + broker.url() + ",wait=2"), null,
+            try (TriadService s = TriadService.start(new TriadService.Options(models, List.of("vda5050:" + broker.url() + ",wait=30"), null,
                     dir.resolve("db"), null, "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "bench-submit", AccessTokens.OPERATOR_ENV, "bench-operator")))) {
                 System.out.printf(Locale.ROOT, "fleet: %d robots joined%n", s.fleet().robots().size());
                 double[] cpu0 = { cpuSeconds(broker.pid()), cpuSeconds(building.pid()), cpuSeconds(ProcessHandle.current().pid()) };
@@ -159,6 +159,14 @@ public final class BuildingBenchmark {
         states.put("queued (not ended)", ids.size() - ended.size());
         System.out.printf(Locale.ROOT, "%nended %d of %d in %.1f s wall (%.0f simulated s): %s%n", ended.size(), ids.size(), wall, wall * speed, states);
         reasons.forEach((r, n) -> System.out.printf(Locale.ROOT, "  %3d x %s%n", n, r));
+        long requeues = 0;
+        long requeued = 0;
+        for (long id : ids) {
+            long n = s.fleet().task(id).orElseThrow().events().stream().filter(e -> e.kind().equals("congestion_requeued")).count();
+            requeues += n;
+            requeued += n > 0 ? 1 : 0;
+        }
+        System.out.printf(Locale.ROOT, "queued again after congestion: %d times, %d tasks%n", requeues, requeued);
         System.out.printf(Locale.ROOT, "deliveries completed per item %s, picks accepted per item %s%n", delivered, picks);
         System.out.printf(Locale.ROOT, "tasks completed per simulated hour: %.0f%n", completed / (wall * speed / 3600));
         if (!times.isEmpty()) {
