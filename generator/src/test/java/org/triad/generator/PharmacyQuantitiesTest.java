@@ -180,8 +180,20 @@ class PharmacyQuantitiesTest {
 		assertTrue(domain.contains(":fluents") && domain.contains("(decrease (courier-battery) (floor-distance ?src ?dst))")
 				&& domain.contains("(increase (total-cost) (floor-distance ?src ?dst))"), domain);
 		assertTrue(problem.contains("(= (courier-battery) 35") && problem.contains("(:metric minimize (total-cost))"), problem);
+		// 'b.weight', the box's class attribute, is a numeric fluent of its class with each box's value
+		assertTrue(domain.contains("(box-weight ?b)"), domain);
+		assertTrue(problem.contains("(= (box-weight morphine) 3") && problem.contains("(= (box-weight saline) 8"), problem);
 		assertEquals(task.domain(), PddlParser.parseDomain(domain, "domain.pddl"), domain);
 		assertEquals(task.problem(), PddlParser.parseProblem(problem, "problem.pddl"), problem);
+	}
+
+	@Test
+	void aBoxWithoutTheWeightThePlanComputesWithIsRefusedByName() {
+		State crate = morning.toBuilder().object(new org.triad.runtime.app.GenericObject("crate", "Box", java.util.Map.of())).build();
+		ModelGoal goal = new ModelGoal(schema, "At", objects(crate, "wardB"));
+		org.triad.runtime.schema.PddlTranslationException e = org.junit.jupiter.api.Assertions.assertThrows(
+				org.triad.runtime.schema.PddlTranslationException.class, () -> new PddlTranslator(schema).translate(crate, goal.schema(), goal.binding()));
+		assertTrue(e.getMessage().startsWith("Box crate has no weight, an attribute of Box the models compute with"), e.getMessage());
 	}
 
 	/** The three ways the user first wrote the courier: each a located finding, or now a plan. */
@@ -192,7 +204,8 @@ class PharmacyQuantitiesTest {
 		List<String> found = check(courier.replace("battery()@pre - Floor", "battery() - Floor"));
 		assertEquals(1, found.size(), found.toString());
 		assertTrue(found.get(0).matches("Courier\\.actor:11:\\d+: error actor\\.effect-needs-pre: .*'battery\\(\\)@pre'.*"), found.get(0));
-		// 2. a payload limit compared with arithmetic: accepted (no misleading 'expr.not-boolean')
+		// 2. a payload limit compared with arithmetic on the box's attribute ('load() + b.weight <= Floor.limit()'): accepted
+		// (no misleading 'expr.not-boolean', no 'unknown enumeration b')
 		assertEquals(List.of(), check(courier));
 		// 3. 'battery() > 10' in a precondition passes the check and plans
 		String threshold = courier.replace("pre: loc() == p && Floor.dock(p) && battery() < 100.0;",
