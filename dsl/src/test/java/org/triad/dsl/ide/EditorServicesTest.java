@@ -392,6 +392,16 @@ class EditorServicesTest {
 		assertTrue(afterValue.contains("h"), afterValue.toString());
 	}
 
+	@Test
+	void completionAfterADotOffersTheObjectsAttributesOrTheEnumerationsLiterals() throws Exception {
+		String text = "domain Shop;\n\ngoal Heavy(Box b) {\n  Bot.holds(b) && b.\n}\n";
+		String uri = lsp.open("Heavy.goal", text);
+		assertEquals(List.of("label", "weight"), complete(uri, at(text, "&& b.", 5)), "Box's own attribute and Thing's");
+		String open = "domain Shop;\n\ngoal Open(Place a, Place b) {\n  World.door(a, b) == DoorState.\n}\n";
+		String openUri = lsp.open("Open.goal", open);
+		assertEquals(List.of("CLOSED", "OPEN"), complete(openUri, at(open, "DoorState.", 10)));
+	}
+
 	private static List<String> complete(String uri, Position p) throws Exception {
 		Either<List<CompletionItem>, CompletionList> r = get(lsp.server.getTextDocumentService().completion(new CompletionParams(new TextDocumentIdentifier(uri), p)));
 		return (r.isLeft() ? r.getLeft() : r.getRight().getItems()).stream().map(CompletionItem::getLabel).sorted().collect(Collectors.toList());
