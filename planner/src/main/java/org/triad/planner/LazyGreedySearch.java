@@ -5,10 +5,13 @@ import java.util.Arrays;
 /**
  * Lazy greedy best-first search with preferred operators and two heuristics, as in LAMA's first
  * iteration: a successor is queued under its parent's values and evaluated only when expanded.
- * Three queues (FF over all successors, FF and landmark count over preferred successors; a fourth
- * landmark queue over all successors costs too much memory on wide tasks such as logistics) are
- * used round-robin, and the preferred ones are boosted every time either heuristic improves. Complete with a closed
- * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
+ * Four queues, as Fast Downward's lama-first has (FF and landmark count, each over all successors and
+ * over preferred ones; without landmarks the two FF queues), are used round-robin, and the preferred
+ * ones are boosted every time either heuristic improves. The landmark queue over all successors lets
+ * the search follow landmarks where FF's preferred operators lead astray (sokoban-sat11 p07: 91 steps
+ * instead of 119); its entries take 8 bytes a successor more, measured on logistics00's widest tasks
+ * in planner/BENCHMARK.md (sixth session). Complete with a closed list; exhausting the queues proves
+ * the task unsolvable (dead ends are relaxed-unsolvable states).
  */
 final class LazyGreedySearch {
     private final FfHeuristic heuristic;
@@ -58,7 +61,7 @@ final class LazyGreedySearch {
         private final int[] goalPos;
         private final int[] goalNeg;
         private final StateSpace space = new StateSpace();
-        private final int nq = landmarks == null ? 2 : 3;
+        private final int nq = landmarks == null ? 2 : 4;
         private final LongHeap[] queues = new LongHeap[nq];
         private final int[] priority = new int[nq];
         private long[][] accepted = landmarks == null ? null : new long[1024][];
@@ -150,7 +153,7 @@ final class LazyGreedySearch {
                 if (progress) {
                     lastProgress = evaluated;
                     priority[1] -= 1000;
-                    if (nq == 3) priority[2] -= 1000;
+                    if (nq == 4) priority[2] -= 1000;
                 }
                 int nh = heuristic.helpfulCount();
                 int[] helpful = new int[nh];
@@ -163,7 +166,10 @@ final class LazyGreedySearch {
                     boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
                     queues[0].push(h, id);
                     if (preferred) queues[1].push(h, id);
-                    if (preferred && nq == 3) queues[2].push(hl, id);
+                    if (nq == 4) {
+                        if (preferred) queues[2].push(hl, id);
+                        queues[3].push(hl, id);
+                    }
                 }
             }
             return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);
