@@ -9,15 +9,17 @@ import java.util.Arrays;
  * over preferred ones; without landmarks the two FF queues), are used round-robin, and the preferred
  * ones are boosted every time either heuristic improves. The landmark queue over all successors lets
  * the search follow landmarks where FF's preferred operators lead astray (sokoban-sat11 p07: 91 steps
- * instead of 119); its entries take 8 bytes a successor more, measured on logistics00's widest tasks
- * in planner/BENCHMARK.md (sixth session). Complete with a closed list; exhausting the queues proves
- * the task unsolvable (dead ends are relaxed-unsolvable states).
+ * instead of 119); it doubles the queues' memory on wide tasks (logistics00 75-0: 150 to 326 MB live
+ * after 15,000 evaluations), so the plan improver, whose lazy search runs on those (the goal agenda's
+ * logistics plans), leaves it out: see planner/BENCHMARK.md, sixth session. Complete with a closed
+ * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
  */
 final class LazyGreedySearch {
     private final FfHeuristic heuristic;
     private final Landmarks landmarks;
     private final Successors successors;
     private final long deadline;
+    private final boolean landmarkQueueOverAll;
 
     private int[] entryParent = new int[1024];
     private int[] entryOp = new int[1024];
@@ -25,6 +27,12 @@ final class LazyGreedySearch {
 
     /** {@code landmarks} may be null: then only the FF queues are used. */
     LazyGreedySearch(FfHeuristic heuristic, Landmarks landmarks, Successors successors, long deadlineNanos) {
+        this(heuristic, landmarks, successors, deadlineNanos, true);
+    }
+
+    /** Without {@code landmarkQueueOverAll}, landmarks order only the preferred successors (three queues). */
+    LazyGreedySearch(FfHeuristic heuristic, Landmarks landmarks, Successors successors, long deadlineNanos, boolean landmarkQueueOverAll) {
+        this.landmarkQueueOverAll = landmarkQueueOverAll;
         this.heuristic = heuristic;
         this.landmarks = landmarks;
         this.successors = successors;
@@ -61,7 +69,7 @@ final class LazyGreedySearch {
         private final int[] goalPos;
         private final int[] goalNeg;
         private final StateSpace space = new StateSpace();
-        private final int nq = landmarks == null ? 2 : 4;
+        private final int nq = landmarks == null ? 2 : landmarkQueueOverAll ? 4 : 3;
         private final LongHeap[] queues = new LongHeap[nq];
         private final int[] priority = new int[nq];
         private long[][] accepted = landmarks == null ? null : new long[1024][];
@@ -153,7 +161,7 @@ final class LazyGreedySearch {
                 if (progress) {
                     lastProgress = evaluated;
                     priority[1] -= 1000;
-                    if (nq == 4) priority[2] -= 1000;
+                    if (nq > 2) priority[2] -= 1000;
                 }
                 int nh = heuristic.helpfulCount();
                 int[] helpful = new int[nh];
@@ -166,10 +174,8 @@ final class LazyGreedySearch {
                     boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
                     queues[0].push(h, id);
                     if (preferred) queues[1].push(h, id);
-                    if (nq == 4) {
-                        if (preferred) queues[2].push(hl, id);
-                        queues[3].push(hl, id);
-                    }
+                    if (preferred && nq > 2) queues[2].push(hl, id);
+                    if (nq == 4) queues[3].push(hl, id);
                 }
             }
             return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);

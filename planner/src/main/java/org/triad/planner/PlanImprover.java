@@ -177,7 +177,9 @@ final class PlanImprover {
 
     private int[] lazy(FfHeuristic h, Landmarks lms, int[] init, int[] goalPos, int[] goalNeg, int[] best) {
         long start = meter.now();
-        LazyGreedySearch.Run run = new LazyGreedySearch(h, lms, successors, deadline).start(init, goalPos, goalNeg);
+        // three queues: the fourth (landmarks over all successors) doubles the memory on the wide tasks
+        // this search runs on (logistics) and made storage p11's plan 24 steps instead of 20
+        LazyGreedySearch.Run run = new LazyGreedySearch(h, lms, successors, deadline, false).start(init, goalPos, goalNeg);
         BestFirstSearch.Result r = run.resume(meter, workUntil, searchEvaluations);
         if (r.outcome() == BestFirstSearch.Outcome.LIMIT) {
             // the budget (work or evaluations) ended mid-search: where the search has come far enough
