@@ -288,4 +288,19 @@ class PlanImprovementTest {
         assertTrue(r.plan().length() <= 14, r.plan().length() + " steps, Fast Downward 13");
         assertTrue(PlanValidator.validate(d, p, r.plan()).valid());
     }
+
+    /**
+     * The improver's lazy search keeps three queues: with lama-first's fourth (landmark count over all
+     * successors, which the portfolio's LAMA has) storage p11's plan grew from 20 steps to 24.
+     */
+    @Test
+    void theImproversLazySearchLeavesOutTheLandmarkQueueOverAllSuccessors() {
+        Domain d = TestProblems.domain("ipc/storage/domain.pddl");
+        Problem p = TestProblems.problem("ipc/storage/p11.pddl");
+        SolveResult r = new TriadEngine(new GroundedProblemCache(1)).solve(d, p, Duration.ofMinutes(5));
+        assertTrue(r.isSolved(), r.status() + " " + r.message());
+        assertFalse(r.isBestSoFar(), "the timeout cut improvement short");
+        assertTrue(PlanValidator.validate(d, p, r.plan()).valid());
+        assertEquals(20, r.plan().length(), r.plan().toPddl());
+    }
 }
