@@ -41,8 +41,14 @@ final class NumericRelaxedPlan {
     private final Map<NumericTask.Cmp, Form> forms = new IdentityHashMap<>();
     private int[] helpful = new int[0];
 
-    /** A comparison as {@code constant + sum coefs[i] * values[vars[i]]} that holds when at least 0 (above 0 when strict). */
-    private record Form(int[] vars, double[] coefs, double constant, boolean strict) { }
+    /**
+     * A comparison as {@code constant + sum coefs[i] * values[vars[i]]} that holds when at least 0 (above 0
+     * when strict); {@code changers}: the operators with an effect on one of its fluents, ascending.
+     */
+    private record Form(int[] vars, double[] coefs, double constant, boolean strict, int[] changers) { }
+
+    /** Per fluent: the operators with a numeric effect on it (the only achievers a comparison of it can have). */
+    private final int[][] changing;
 
     /** A subgoal and the operator whose precondition it is (-1: the goal). */
     private record Subgoal(NumericTask.Cond cond, int by) { }
@@ -57,6 +63,18 @@ final class NumericRelaxedPlan {
         gain = new double[task.fluentNames.size()];
         achiever = new int[task.factNames.size()];
         marked = new boolean[task.factNames.size()];
+        List<List<Integer>> by = new ArrayList<>();
+        for (int f = 0; f < gain.length; f++) by.add(new ArrayList<>());
+        for (int o = 0; o < no; o++) {
+            for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                for (NumericTask.NumEffect n : e.numeric()) {
+                    List<Integer> l = by.get(n.fluent());
+                    if (l.isEmpty() || l.get(l.size() - 1) != o) l.add(o);
+                }
+            }
+        }
+        changing = new int[gain.length][];
+        for (int f = 0; f < gain.length; f++) changing[f] = by.get(f).stream().mapToInt(Integer::intValue).toArray();
     }
 
     /**
@@ -133,7 +151,7 @@ final class NumericRelaxedPlan {
 
     /** A comparison's shortfall, given what the relaxed plan already adds, met by repeating its earliest achiever. */
     private void shortfall(NumericTask.Cmp m, int by, double[] values, Deque<Subgoal> open) {
-        Form form = forms.computeIfAbsent(m, NumericRelaxedPlan::form);
+        Form form = forms.computeIfAbsent(m, this::form);
         if (form == null) return;
         double now = form.constant;
         for (int i = 0; i < form.vars.length; i++) {
@@ -150,7 +168,7 @@ final class NumericRelaxedPlan {
         if (need < 0 || need == 0 && !form.strict) return;
         int best = -1;
         double bestDelta = 0;
-        for (int o = 0; o < opLayer.length; o++) {
+        for (int o : form.changers) {
             if (o == by || opLayer[o] < 0 || task.leftOut != null && task.leftOut[o]) continue;
             double d = delta(o, form, values, false);
             if (d <= 1e-12) continue;
@@ -208,7 +226,7 @@ final class NumericRelaxedPlan {
     }
 
     /** The comparison as a form that holds when at least 0, null when it is not linear or an (in)equality. */
-    private static Form form(NumericTask.Cmp m) {
+    private Form form(NumericTask.Cmp m) {
         double sign;
         switch (m.op()) {
             case ">=", ">" -> sign = 1;
@@ -228,8 +246,10 @@ final class NumericRelaxedPlan {
                 cs.add(c);
             }
         });
+        java.util.TreeSet<Integer> changers = new java.util.TreeSet<>();
+        for (int v : vars) for (int o : changing[v]) changers.add(o);
         return new Form(vars.stream().mapToInt(Integer::intValue).toArray(), cs.stream().mapToDouble(Double::doubleValue).toArray(), k,
-                m.op().length() == 1);
+                m.op().length() == 1, changers.stream().mapToInt(Integer::intValue).toArray());
     }
 
     /** Adds {@code factor * e}'s coefficients to {@code coefs}; returns its constant part, NaN when not linear. */
