@@ -17,7 +17,8 @@ import java.util.TreeMap;
  * true by the earliest operator that moves its linear form the right way, <em>as many times as the
  * shortfall needs</em> (Metric-FF's repeated achievers: three {@code initialize} steps for a need of 3).
  * Each chosen operator's preconditions become subgoals; one repeated {@code k} times needs what it
- * consumes {@code k} times (an {@code associate} run twice needs twice the substrate). The estimate is the
+ * consumes {@code k} times (an {@code associate} run twice needs twice the substrate), and an achiever that
+ * moves back what its consumer moves is left out (it would feed a cycle of shortfalls). The estimate is the
  * number of steps in the relaxed plan; its operators applicable in the state are the helpful actions.
  * <p>
  * Where the layer estimate is the sum of the layers at which the goal's conjuncts first hold, it stays
@@ -27,7 +28,7 @@ import java.util.TreeMap;
  */
 final class NumericRelaxedPlan {
     /** Subgoals handled per evaluation at most (a cycle of operators feeding each other's shortfalls ends here). */
-    private static final int MAX_SUBGOALS = 20_000;
+    private static final int MAX_SUBGOALS = 5_000;
 
     private final NumericTask task;
     private final NumericHeuristic graph;
@@ -166,10 +167,12 @@ final class NumericRelaxedPlan {
             if (own < 0) need += (count[by] - 1) * -own;
         }
         if (need < 0 || need == 0 && !form.strict) return;
+        // an achiever that moves back what the consumer moves is left out: it would feed a cycle of shortfalls
+        // (farmland's workers walked between two farms) until the subgoal cap, on every evaluation
         int best = -1;
         double bestDelta = 0;
         for (int o : form.changers) {
-            if (o == by || opLayer[o] < 0 || task.leftOut != null && task.leftOut[o]) continue;
+            if (o == by || opLayer[o] < 0 || task.leftOut != null && task.leftOut[o] || by >= 0 && undoes(o, by, values)) continue;
             double d = delta(o, form, values, false);
             if (d <= 1e-12) continue;
             if (best < 0 || opLayer[o] < opLayer[best] || opLayer[o] == opLayer[best] && d > bestDelta) {
@@ -181,6 +184,32 @@ final class NumericRelaxedPlan {
         double times = need / bestDelta;
         int k = (int) Math.min(10_000, Math.max(1, form.strict && times == Math.floor(times) ? times + 1 : Math.ceil(times - 1e-9)));
         choose(best, k, values, open);
+    }
+
+    /**
+     * Whether {@code o} moves back what {@code by} moves (takes away from a fluent {@code by} adds to and
+     * adds to one {@code by} takes from: a worker walked back to the farm it came from): such an achiever
+     * of {@code by}'s precondition would feed a cycle of shortfalls until the subgoal cap.
+     */
+    private boolean undoes(int o, int by, double[] values) {
+        return moves(o, by, values, true) && moves(o, by, values, false);
+    }
+
+    /** Whether {@code o} changes a fluent the other way from {@code by} ({@code byRaises}: one that {@code by} raises). */
+    private boolean moves(int o, int by, double[] values, boolean byRaises) {
+        for (NumericTask.Effects e : task.ops.get(by).effects()) {
+            for (NumericTask.NumEffect n : e.numeric()) {
+                double d = change(n, values);
+                if (!(byRaises ? d > 0 : d < 0)) continue;
+                for (NumericTask.Effects f : task.ops.get(o).effects()) {
+                    for (NumericTask.NumEffect m : f.numeric()) {
+                        double c = change(m, values);
+                        if (m.fluent() == n.fluent() && (byRaises ? c < 0 : c > 0)) return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /** How much one application of {@code o} moves a form (its rises only, unless {@code withFalls}). */
