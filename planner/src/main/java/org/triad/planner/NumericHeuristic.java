@@ -190,6 +190,29 @@ final class NumericHeuristic {
     }
 
     /**
+     * The graph of {@link #estimate} for {@link NumericRelaxedPlan}: fills the first layer each operator
+     * applies and each goal conjunct holds (-1: not reached); returns the estimate or {@link #DEAD_END}.
+     */
+    int explore(BitSet facts, double[] values, int[] opLayer, int[] goalLayer) {
+        return layers(facts, values, opLayer, goalLayer, -1);
+    }
+
+    /** The goal's conjuncts, in the order {@link #explore} numbers them. */
+    List<NumericTask.Cond> goals() {
+        return goals;
+    }
+
+    /** An operator's positive fact preconditions. */
+    int[] preFacts(int o) {
+        return preFacts[o];
+    }
+
+    /** The rest of an operator's precondition (its comparisons, disjunctions). */
+    NumericTask.Cond preRest(int o) {
+        return preRest[o];
+    }
+
+    /**
      * The graph of {@link #estimate}; {@code opLayer}/{@code goalLayer} (when given) get the first layer each
      * operator applies / each goal conjunct holds (-1: not reached). With {@code after} at least 0 the graph
      * goes on for that many layers after the goal holds, without widening any further, and returns 0

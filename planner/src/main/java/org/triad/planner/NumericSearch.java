@@ -60,6 +60,8 @@ final class NumericSearch {
     static final long EXACT_FIRST_BLIND_EVALUATIONS = 10_000;
     /** The weight on h_add of the weighted A* that looks for a cheap first plan when the A* above gives up. */
     static final int ADDITIVE_WEIGHT = 2;
+    /** Relaxed-plan evaluations the enforced hill-climbing for a goal of numbers only may spend before the greedy search takes over. */
+    static final long HILL_CLIMB_EVALUATIONS = 50_000;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
@@ -187,6 +189,14 @@ final class NumericSearch {
             expanded += cheap.expanded;
             if (cheap.outcome == Outcome.FOUND) first = cheap;
         }
+        if (first == null && !h.goalHasFacts()) {
+            // a goal of numbers only: the layer estimate stays flat while one unit at a time is added, and the greedy
+            // search gets lost on its plateaus (IPC pathwaysmetric p2); Metric-FF's enforced hill-climbing on its
+            // relaxed plan with helpful actions goes through them
+            Run climb = hillClimb(task, new NumericRelaxedPlan(task, h), init, evaluations[0] + HILL_CLIMB_EVALUATIONS, deadline, evaluations);
+            expanded += climb.expanded;
+            if (climb.outcome == Outcome.FOUND) first = climb;
+        }
         if (first == null) {
             first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache,
                     Long.MAX_VALUE, 0);
@@ -263,6 +273,71 @@ final class NumericSearch {
         }
         SolveResult.Stats st = stats(groundMs, searchStart, expanded, evaluations[0]);
         return cutShort ? SolveResult.bestSoFar(plan(task, best), st) : SolveResult.solved(plan(task, best), st);
+    }
+
+    /**
+     * Enforced hill-climbing (Hoffmann's FF and Metric-FF): from the current state, breadth-first over the
+     * successors by helpful actions of the {@link NumericRelaxedPlan} until a state with a shorter relaxed
+     * plan, which becomes the current one; operators in ascending order, so the plan is the same on every
+     * run. Gives up ({@link Outcome#LIMIT}) when a breadth-first search finds no better state or the budget
+     * ends; the caller then searches as before.
+     */
+    private static Run hillClimb(NumericTask task, NumericRelaxedPlan rp, Key init, long maxEvaluations, long deadline, long[] evaluations) {
+        Run run = new Run();
+        List<Node> nodes = run.nodes;
+        List<int[]> helpful = new ArrayList<>();
+        int hCur = rp.evaluate(init.facts, init.values);
+        evaluations[0]++;
+        run.outcome = Outcome.LIMIT;
+        if (hCur == NumericHeuristic.DEAD_END) return run;
+        nodes.add(new Node(init, -1, -1, 0, hCur, hCur, 0));
+        helpful.add(rp.helpful());
+        int current = 0;
+        while (true) {
+            if (holds(task.goal, nodes.get(current).state)) {
+                run.outcome = Outcome.FOUND;
+                run.goal = current;
+                return run;
+            }
+            java.util.ArrayDeque<Integer> queue = new java.util.ArrayDeque<>();
+            java.util.Set<Key> seen = new java.util.HashSet<>();
+            queue.add(current);
+            seen.add(nodes.get(current).state);
+            int better = -1;
+            while (!queue.isEmpty() && better < 0) {
+                int id = queue.poll();
+                Node n = nodes.get(id);
+                if (System.nanoTime() > deadline) {
+                    run.outcome = Outcome.TIMEOUT;
+                    return run;
+                }
+                run.expanded++;
+                for (int o : helpful.get(id)) {
+                    NumericTask.Op op = task.ops.get(o);
+                    if (!holds(op.pre(), n.state)) continue;
+                    Key next = apply(op, n.state, task.accumulator);
+                    if (next == null) {
+                        if (run.faults++ == 0) run.firstFault = o;
+                        continue;
+                    }
+                    if (!seen.add(next)) continue;
+                    if (evaluations[0] >= maxEvaluations) return run;
+                    int hv = rp.evaluate(next.facts, next.values);
+                    evaluations[0]++;
+                    if (hv == NumericHeuristic.DEAD_END) continue;
+                    nodes.add(new Node(next, id, o, n.g + 1, hv, hv, nodes.size()));
+                    helpful.add(rp.helpful());
+                    if (hv < hCur || holds(task.goal, next)) {
+                        better = nodes.size() - 1;
+                        hCur = hv;
+                        break;
+                    }
+                    queue.add(nodes.size() - 1);
+                }
+            }
+            if (better < 0) return run; // a dead end for the helpful actions: the caller's search takes over
+            current = better;
+        }
     }
 
     /**
