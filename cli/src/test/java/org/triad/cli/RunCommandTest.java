@@ -50,12 +50,13 @@ class RunCommandTest {
 	}
 
 	@Test
-	void impossibleGoalAbortsAfterExactlyFourPlanningAttemptsWithRemoteOperation() {
+	void impossibleGoalAbortsAtOnceWithRemoteOperation() {
 		// the courier's moves drain its battery, so its first goal is planned with the rest of the task in view (a task
-		// does not strand its robot): the missing gauze is found before the courier drives to the storage
+		// does not strand its robot): the missing gauze is found before the courier drives to the storage. The planner
+		// proved it (the task unsolvable from here) and nothing has moved since, so RefArc does not ask again
 		Result r = triad("run", HOSPITAL, "--state", "Shortage.state", "--task", "CollectAndDeliver(gauze, storage, ward1)");
 		assertEquals(1, r.code(), String.join("\n", r.lines()));
-		assertEquals(3, r.count("replanning IsAt(storage)"));
+		assertEquals(0, r.count("replanning"), r.lines().toString());
 		assertEquals(0, r.count("Courier.move"), "the courier did not move: " + r.lines());
 		assertEquals(1, r.count("task CollectAndDeliver(gauze, storage, ward1) aborted at goal IsAt(storage): planning failed:"
 				+ " Holds(gauze) unreachable after IsAt(storage) (no plan: Holds(gauze) unreachable: Courier.carries(gauze) needs"

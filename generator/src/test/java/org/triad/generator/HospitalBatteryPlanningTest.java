@@ -14,6 +14,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.triad.dsl.app.ApplicationAssembler;
 import org.triad.dsl.app.LoadedApplication;
+import org.triad.planner.PddlPlanner;
+import org.triad.planner.SolveResult;
 import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.DomainObject;
 import org.triad.runtime.app.GroundAction;
@@ -95,6 +97,22 @@ class HospitalBatteryPlanningTest {
 		// the need is what the shortest trip draws with the battery plentiful: 58 m at 0.5 % a metre
 		assertTrue(o.failure().startsWith("Delivered(gauze, ward1) unreachable: Courier.battery() is 5.0 and the trip needs 29.0"),
 				o.failure());
+		assertTrue(o.proven(), "proven: RefArc does not plan it again from the same state");
+		// a planner that ran out of time proved nothing: planning again may succeed
+		PddlPlanner slow = new PddlPlanner() {
+			@Override
+			public SolveResult solve(org.triad.planner.pddl.Domain d, org.triad.planner.pddl.Problem p, java.time.Duration timeout) {
+				return SolveResult.timeout(SolveResult.Stats.NONE);
+			}
+
+			@Override
+			public String name() {
+				return "timeout";
+			}
+		};
+		GoalSolver.Outcome timedOut = new GoalSolver(schema, slow, java.time.Duration.ofSeconds(1)).plan(goal(flat), List.of(), flat);
+		assertNull(timedOut.plan());
+		assertFalse(timedOut.proven(), timedOut.failure());
 	}
 
 	private static ModelGoal goal(State s) {

@@ -10,6 +10,11 @@ import org.triad.runtime.component.ComponentFault;
  * a failure, and after a failure the goal is re-planned, at most maxReplans times in a row; the next
  * failure aborts the task with a remote-operation request on status. "In a row" means without a
  * successful action in between: a successful action resets the count, and so does a new goal.
+ * A refusal the planner proved (no plan reaches the goal from the state it planned from, e.g. a battery
+ * too low for the trip) aborts at once when no action failed since the goal started: nothing has
+ * changed the world since, so planning again would give the same answer. After a failed action the
+ * proven refusal is re-planned like any failure (the world may be changing under the robot: a door
+ * reopens, a lift recovers). A timeout, a spent budget, a fault and a refuted plan are never proven.
  * A planning failure that follows a failed action in the same row names that action's failure first
  * (cause): the planner's "no plan" from where a stuck lift left the robot is the consequence, the
  * lift's fault the reason, on the re-plan and on the abort. The abort carries the kind of that cause
@@ -35,6 +40,10 @@ component Controller {
   var int failures = 0;
   var String reason = "";
   var String cause = "";
+  /* an action failed (or its component faulted) since the current goal started */
+  var boolean actionFailed = false;
+  /* the last failure is a proven refusal with no failed action before it in this goal: abort at once */
+  var boolean refused = false;
 
   automaton {
     initial state Idle;
@@ -50,7 +59,7 @@ component Controller {
     Planning -> Planning on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
     Executing -> Executing on task / { waiting.add(task); status = new Status.TaskQueued(task, waiting.size()); };
 
-    NextGoal -> Planning [run.hasNextGoal()] / { run.nextGoal(); failures = 0; cause = ""; planRequest = run.planRequest(); };
+    NextGoal -> Planning [run.hasNextGoal()] / { run.nextGoal(); failures = 0; cause = ""; actionFailed = false; refused = false; planRequest = run.planRequest(); };
     NextGoal -> TaskDone [!run.hasNextGoal()] / { status = new Status.TaskCompleted(run.task()); };
 
     Planning -> NextGoal on plan [run.answers(plan) && plan.alreadySatisfied()] / {
@@ -62,6 +71,7 @@ component Controller {
     };
     Planning -> Failed on plan [run.answers(plan) && run.planningFailed(plan)] / {
       reason = run.planningFailedAfter(cause, run.planningFailure(plan));
+      refused = run.planningProven(plan) && !actionFailed;
     };
 
     NextAction -> Executing [run.hasNextAction()] / {
@@ -81,6 +91,8 @@ component Controller {
       status = new Status.ActionFailed(actionResult.action(), actionResult.reason());
       reason = "action " + actionResult.action() + " failed: " + actionResult.reason();
       cause = reason;
+      actionFailed = true;
+      refused = false;
       run.failedAs(actionResult.cause());
     };
 
@@ -89,6 +101,7 @@ component Controller {
     Planning -> Failed on fault [run.concerns(fault)] / {
       status = new Status.ComponentFailed(fault);
       reason = run.planningFailedAfter(cause, run.faultReason(fault));
+      refused = false;
     };
     Executing -> Executing on fault [!run.concerns(fault)] / { status = new Status.ComponentFailed(fault); };
     Executing -> Failed on fault [run.concerns(fault)] / {
@@ -96,15 +109,17 @@ component Controller {
       status = new Status.ActionFailed(run.action(), run.faultReason(fault));
       reason = "action " + run.action() + " failed: " + run.faultReason(fault);
       cause = reason;
+      actionFailed = true;
+      refused = false;
       run.noFailureCause();
     };
 
-    Failed -> Planning [failures < maxReplans] / {
+    Failed -> Planning [!refused && failures < maxReplans] / {
       failures = failures + 1;
       status = new Status.Replanning(run.goal(), failures, maxReplans, reason);
       planRequest = run.planRequest();
     };
-    Failed -> TaskDone [failures >= maxReplans] / {
+    Failed -> TaskDone [refused || failures >= maxReplans] / {
       status = new Status.TaskAborted(run.task(), run.goal(), reason, run.failureCause());
       status = new Status.RemoteOperationRequested(run.task(), run.goal(), reason);
     };

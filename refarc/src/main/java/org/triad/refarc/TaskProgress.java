@@ -87,6 +87,11 @@ public final class TaskProgress {
         return result.outcome() instanceof PlanningOutcome.Failed;
     }
 
+    /** Whether the planner proved that no plan reaches the goal from the state it planned from. */
+    public boolean planningProven(PlanResult result) {
+        return result.outcome() instanceof PlanningOutcome.Failed f && f.proven();
+    }
+
     public String planningFailure(PlanResult result) {
         return ((PlanningOutcome.Failed) result.outcome()).reason();
     }

@@ -192,6 +192,11 @@ final class Corridor {
             return (g, from) -> PlanningOutcome.failed(reason);
         }
 
+        /** A refusal the planner proved: no plan from this state. */
+        static Planning refuse(String reason) {
+            return (g, from) -> PlanningOutcome.unsolvable(reason);
+        }
+
         static Planning crash(String message) {
             return (g, from) -> {
                 throw new IllegalStateException(message);

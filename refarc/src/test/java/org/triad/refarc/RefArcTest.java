@@ -136,6 +136,47 @@ class RefArcTest {
         assertEquals("IsAt(b)", request.goal().describe());
     }
 
+    /** Issue #22: a refusal the planner proved (a battery too low for the trip) is not planned again from the same state. */
+    @Test
+    void aProvenRefusalAbortsAtOnce() {
+        World world = new World("a");
+        ScriptedPlanner planner = ScriptedPlanner.thenAlways(Planning.refuse("battery is 5.0 and the trip needs 29.0"));
+        RefArcRun r = run(world, planner, Task.goTo("b", "c"));
+        assertEquals(List.of(
+                "task GoTo(b, c) started",
+                "task GoTo(b, c) aborted at goal IsAt(b): planning failed: battery is 5.0 and the trip needs 29.0",
+                "remote operation requested for task GoTo(b, c) at goal IsAt(b): planning failed: battery is 5.0 and the trip needs 29.0"), r.log());
+        assertEquals(RefArcRun.Outcome.ABORTED, r.outcome());
+        assertEquals(1, planner.calls(), "planned once: the answer cannot change from an unchanged state");
+        assertEquals(List.of(), world.executed());
+    }
+
+    /**
+     * After a failed action a proven refusal is re-planned like any failure (the world changes under the robot),
+     * and a new goal starts clean: its proven refusal aborts at once.
+     */
+    @Test
+    void aProvenRefusalAfterAFailedActionOfTheSameGoalIsReplanned() {
+        World world = new World("a").executions(Execution.FAIL);
+        ScriptedPlanner planner = new ScriptedPlanner(Planning.SHORTEST, Planning.refuse("door closed"), Planning.SHORTEST,
+                Planning.refuse("battery is 5.0 and the trip needs 29.0"));
+        RefArcRun r = run(world, planner, Task.goTo("b", "c"));
+        assertEquals(List.of(
+                "task GoTo(b, c) started",
+                "plan for IsAt(b): robot.move(a, b)",
+                "action 1/1 robot.move(a, b) started",
+                "action robot.move(a, b) failed: the platform reported failure",
+                "replanning IsAt(b) (1 of 3): action robot.move(a, b) failed: the platform reported failure",
+                "replanning IsAt(b) (2 of 3): action robot.move(a, b) failed: the platform reported failure; planning from there failed: door closed",
+                "plan for IsAt(b): robot.move(a, b)",
+                "action 1/1 robot.move(a, b) started",
+                "action robot.move(a, b) succeeded",
+                "goal IsAt(b) satisfied",
+                "task GoTo(b, c) aborted at goal IsAt(c): planning failed: battery is 5.0 and the trip needs 29.0",
+                "remote operation requested for task GoTo(b, c) at goal IsAt(c): planning failed: battery is 5.0 and the trip needs 29.0"), r.log());
+        assertEquals(4, planner.calls());
+    }
+
     @Test
     void aViolatedPreconditionIsDetectedOnAFreshStateAndTriggersReplanning() {
         // someone pushes the robot to e right before the precondition of the first action is checked

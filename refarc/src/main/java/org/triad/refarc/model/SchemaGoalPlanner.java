@@ -26,6 +26,9 @@ public final class SchemaGoalPlanner implements GoalPlanner {
 	}
 
 	private static PlanningOutcome outcome(GoalSolver.Outcome outcome) {
-		return outcome.planned() ? new PlanningOutcome.Planned(outcome.plan()) : new PlanningOutcome.Failed(outcome.failure());
+		if (outcome.planned()) {
+			return PlanningOutcome.planned(outcome.plan());
+		}
+		return outcome.proven() ? PlanningOutcome.unsolvable(outcome.failure()) : PlanningOutcome.failed(outcome.failure());
 	}
 }

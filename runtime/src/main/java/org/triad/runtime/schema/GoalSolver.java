@@ -53,8 +53,28 @@ public final class GoalSolver {
 		return new GoalSolver(schema, planner, timeout, java.util.Objects.requireNonNull(costs, "costs"));
 	}
 
-	/** A plan, or the reason there is none. */
-	public record Outcome(Plan plan, String failure) {
+	/**
+	 * A plan, or the reason there is none. {@code proven} marks a failure the planner proved: no plan reaches the
+	 * goal from this state (the search space exhausted, or a goal shown unreachable), so planning again from the
+	 * same state gives the same answer. A timeout, a spent work budget, a model or translation error and a fault
+	 * of the planner are not proven.
+	 */
+	public record Outcome(Plan plan, String failure, boolean proven) {
+		public Outcome(Plan plan, String failure) {
+			this(plan, failure, false);
+		}
+
+		public Outcome {
+			if (proven && plan != null) {
+				throw new IllegalArgumentException("a plan proves nothing unsolvable");
+			}
+		}
+
+		/** A failure the planner proved (see the class comment): no plan from this state. */
+		static Outcome unsolvable(String failure) {
+			return new Outcome(null, failure, true);
+		}
+
 		public boolean planned() {
 			return plan != null;
 		}
@@ -85,7 +105,7 @@ public final class GoalSolver {
 				unreachable = planner.solve(FactsOnly.domain(task.domain()), FactsOnly.problem(task.problem()), timeout).unreachable();
 			}
 			if (!unreachable.isEmpty()) {
-				return new Outcome(null, "no plan: " + new UnreachableGoalText(schema, task.names())
+				return Outcome.unsolvable("no plan: " + new UnreachableGoalText(schema, task.names())
 						.describe(UnreachableGoalText.goalLabel(goal, binding), unreachable));
 			}
 			if (!result.isSolved()) {
@@ -93,7 +113,7 @@ public final class GoalSolver {
 					case UNSOLVABLE -> "no plan: " + (result.message().isEmpty() ? "the goal is unreachable" : result.message());
 					case TIMEOUT -> "no plan within " + timeout.toMillis() + " ms";
 					default -> "planner error: " + result.message();
-				});
+				}, result.status() == SolveResult.Status.UNSOLVABLE);
 			}
 			List<PddlStep> steps = result.plan().steps();
 			return new Outcome(task.plan(steps.stream().map(PddlStep::name).toList(), steps.stream().map(PddlStep::args).toList()), null);
@@ -122,7 +142,8 @@ public final class GoalSolver {
 		if (!first.planned()) {
 			String needs = needs(goal, from);
 			// no quantity in the way: the failure names the facts that are missing, and says it all
-			return new Outcome(null, needs.isEmpty() ? first.failure() : goal.describe() + " unreachable: " + needs + "(" + first.failure() + ")");
+			return new Outcome(null, needs.isEmpty() ? first.failure() : goal.describe() + " unreachable: " + needs + "(" + first.failure() + ")",
+					first.proven());
 		}
 		if (then.isEmpty()) {
 			return first;
@@ -146,7 +167,8 @@ public final class GoalSolver {
 				List<PddlStep> steps = result.plan().steps();
 				return new Outcome(task.planUntilReached(steps.stream().map(PddlStep::name).toList(), steps.stream().map(PddlStep::args).toList()), null);
 			}
-			return new Outcome(null, stranded);
+			// the whole task proven impossible from here, not just the goal-by-goal plans
+			return new Outcome(null, stranded, result.status() == SolveResult.Status.UNSOLVABLE);
 		} catch (PddlTranslationException | ModelEvaluationException e) {
 			return new Outcome(null, e.getMessage());
 		} catch (RuntimeException e) {

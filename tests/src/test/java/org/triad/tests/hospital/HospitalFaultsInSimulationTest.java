@@ -97,16 +97,14 @@ class HospitalFaultsInSimulationTest {
         HospitalRun run = h.run(delivery(h));
 
         assertFalse(run.completed(), () -> log(run));
-        // the planner's wording of "no plan" is its own; what matters is that it was asked four times and said no
+        // the planner's wording of "no plan" is its own; what matters is that it proved there is none, so it was asked
+        // once: no action of the goal failed, nothing changed, and planning again would say the same
         List<String> milestones = milestones(run).stream()
                 .map(m -> m.replaceAll("planning failed: no plan: .*", "planning failed: no plan")).toList();
         assertEquals(List.of(
                 "task CollectAndDeliver(gauze, storage, ward1) started",
                 "plan for IsAt(storage): Courier.move(lobby, c4), Courier.move(c4, c1), Courier.move(c1, storage)",
                 "goal IsAt(storage) satisfied",
-                "replanning Holds(gauze) (1 of 3): planning failed: no plan",
-                "replanning Holds(gauze) (2 of 3): planning failed: no plan",
-                "replanning Holds(gauze) (3 of 3): planning failed: no plan",
                 "task CollectAndDeliver(gauze, storage, ward1) aborted at goal Holds(gauze): planning failed: no plan",
                 "remote operation requested for task CollectAndDeliver(gauze, storage, ward1) at goal Holds(gauze):"
                         + " planning failed: no plan"),

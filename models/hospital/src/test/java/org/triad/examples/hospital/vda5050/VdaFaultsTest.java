@@ -43,8 +43,17 @@ import generated.hospital.tasks.GoTo;
  * re-plans), with the cause on Status, and every message on the broker conforms to the official schemas.
  */
 class VdaFaultsTest {
-    /** Short timeouts so a fault shows within seconds: online 10 s, silence 2 s, action 60 s, reconnect grace 1 s. */
-    static final VdaTimeouts TEST_TIMEOUTS = new VdaTimeouts(10, 2, 60, 1);
+    /**
+     * For the real-broker tests in general: online 10 s, silence 10 s, action 60 s, reconnect grace 1 s. Silence is
+     * measured on the wall clock (VDA 5050 has no other), and on a loaded machine (2 cores running other builds, as
+     * in CI) a live robot's process or the master's MQTT thread can be starved for more than 2 s: a short bound
+     * failed {@code VdaRobotTest} with "no state from AGV for 2.0 s" while nothing was wrong. 10 s still fails a
+     * robot that really fell silent, only later; only the test of silence itself needs the short bound
+     * ({@link #SILENCE_TIMEOUTS}). A robot that is killed is gone at once by its last will, whatever this bound.
+     */
+    static final VdaTimeouts TEST_TIMEOUTS = new VdaTimeouts(10, 10, 60, 1);
+    /** For the test of a robot that stops sending state: its silence shows within 2 s. */
+    static final VdaTimeouts SILENCE_TIMEOUTS = new VdaTimeouts(10, 2, 60, 1);
     /**
      * A broker restart takes the robot's MQTT client a reconnect with back-off (1 s, then 2 s), which
      * a 1 s grace missed on a loaded machine; the defaults give 3 s, and 5 s keep the test from racing it;
@@ -219,7 +228,7 @@ class VdaFaultsTest {
     @Test
     void robotThatStopsSendingStateFailsTheActionByTimeoutAndEndsInRemoteOperation() {
         try (AgvProcess robot = AgvProcess.start(broker.url(), "courier-1", 5, dir);
-                MasterControl master = MasterControl.connect(broker.url(), TEST_TIMEOUTS, masterLog::add)) {
+                MasterControl master = MasterControl.connect(broker.url(), SILENCE_TIMEOUTS, masterLog::add)) {
             VdaHospital h = new VdaHospital(master, "courier-1");
             AtomicBoolean frozen = new AtomicBoolean();
             RefArcRun run = h.run(new GoTo(h.objects().room("ward1")), s -> {

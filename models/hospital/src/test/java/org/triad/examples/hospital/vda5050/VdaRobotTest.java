@@ -60,7 +60,11 @@ class VdaRobotTest {
                 assertTrue(robot.instantAction("factsheetRequest", Map.of()), robot.lastFailure().toString());
                 assertEquals("Triad simulated courier", robot.factsheet().orElseThrow().at("/typeSpecification/seriesName").asText());
                 CompletableFuture<Boolean> drive = CompletableFuture.supplyAsync(() -> robot.drive("lobby", "c4"));
-                Thread.sleep(300);
+                // paused while it drives: wait for the state that says so (a fixed sleep raced the order on a loaded machine)
+                long deadline = System.nanoTime() + 30_000_000_000L;
+                while (!robot.state().map(s -> s.driving()).orElse(false) && !drive.isDone() && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
                 RemoteAgv pauser = master.agv("courier-2");
                 assertTrue(pauser.instantAction("startPause", Map.of()));
                 Thread.sleep(300);
