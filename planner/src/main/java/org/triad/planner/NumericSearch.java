@@ -121,6 +121,15 @@ final class NumericSearch {
         long faults;
         int firstFault = -1;
 
+        /** The state after {@code task}'s operator {@code o} in {@code s}, or null when it does not apply or computes no finite value (counted). */
+        Key successor(NumericTask task, int o, Key s) {
+            NumericTask.Op op = task.ops.get(o);
+            if (!holds(op.pre(), s)) return null;
+            Key next = apply(op, s, task.accumulator);
+            if (next == null && faults++ == 0) firstFault = o;
+            return next;
+        }
+
         String faultNote(NumericTask task) {
             if (faults == 0) return "";
             return "; " + faults + " step" + (faults == 1 ? " was" : "s were") + " left out because a value computed is not a finite number"
@@ -313,13 +322,8 @@ final class NumericSearch {
                 }
                 run.expanded++;
                 for (int o : helpful.get(id)) {
-                    NumericTask.Op op = task.ops.get(o);
-                    if (!holds(op.pre(), n.state)) continue;
-                    Key next = apply(op, n.state, task.accumulator);
-                    if (next == null) {
-                        if (run.faults++ == 0) run.firstFault = o;
-                        continue;
-                    }
+                    Key next = run.successor(task, o, n.state);
+                    if (next == null) continue;
                     if (!seen.add(next)) continue;
                     if (evaluations[0] >= maxEvaluations) return run;
                     int hv = rp.evaluate(next.facts, next.values);
@@ -398,13 +402,8 @@ final class NumericSearch {
                 return run;
             }
             for (int o : successors.candidates(n.state.facts)) {
-                NumericTask.Op op = task.ops.get(o);
-                if (!holds(op.pre(), n.state)) continue;
-                Key next = apply(op, n.state, task.accumulator);
-                if (next == null) {
-                    if (run.faults++ == 0) run.firstFault = o;
-                    continue;
-                }
+                Key next = run.successor(task, o, n.state);
+                if (next == null) continue;
                 double g = task.metric == null ? n.g + 1 : task.metricValue(next.values) - base;
                 Integer old = seen.get(next);
                 if (old != null && (old < 0 || !reopen || nodes.get(old).g <= g)) continue;
