@@ -472,7 +472,7 @@ public final class RemoteAgv implements FailureExplaining {
         }
         awaitAbandonedOrderEnded();
         String from = traffic.decisionPoint(name());
-        Optional<String> side = traffic.aside(name());
+        Optional<String> side = traffic.wayOut(name());
         if (side.isEmpty()) {
             // nowhere to go: one of the robots it would have waited for makes way instead
             Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
