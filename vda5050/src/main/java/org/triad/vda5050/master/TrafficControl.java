@@ -119,6 +119,17 @@ public final class TrafficControl {
         return Optional.empty();
     }
 
+    /** Robots whose wait at the door of a dead end the table refused, to let the robot inside out (see {@link #displaced}). */
+    private final java.util.Set<String> displaced = new java.util.HashSet<>();
+
+    /**
+     * Whether the robot's last refusal was to let a robot out of the dead end at whose door it waited (once): it makes
+     * way, stepping aside even if its caller drove it without (it is the only one who can move).
+     */
+    synchronized boolean displaced(String robot) {
+        return displaced.remove(robot);
+    }
+
     /** Whether the robot was asked to make way while it waits: its wait withdrawn (once). */
     synchronized boolean makeWay(String robot) {
         if (!makingWay.remove(robot) || table.waiting(robot).isEmpty()) {
@@ -291,6 +302,7 @@ public final class TrafficControl {
         for (Refused r : table.takeDisplaced()) { // robots waiting at the door of the dead end this one comes out of
             log.accept("traffic: " + r.reason());
             mailbox.put(r.robot(), r);
+            displaced.add(r.robot());
         }
         return d;
     }

@@ -16,7 +16,10 @@ import org.junit.jupiter.api.Test;
 import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Messages.AgvError;
 import org.triad.vda5050.protocol.Messages.Edge;
+import org.triad.vda5050.protocol.Messages.ErrorLevel;
+import org.triad.vda5050.protocol.Messages.Reference;
 import org.triad.vda5050.protocol.Messages.EdgeState;
 import org.triad.vda5050.protocol.Messages.Node;
 import org.triad.vda5050.protocol.Messages.NodeState;
@@ -146,5 +149,34 @@ class RouteDriveTest {
         assertInstanceOf(Granted.class, traffic.take("A").orElseThrow(), "B left the door: A comes out");
         assertEquals(List.of("storage", "c1"), traffic.read(t -> t.base("A")));
         assertEquals(Map.of(), traffic.read(t -> t.waitsFor()));
+    }
+
+    /**
+     * The AGV failed an edge while a stretch was granted to it: the drive fails with the AGV's error, and no order update
+     * is sent after it (the AGV, its order aborted short of the decision point, rejected one: {@code noRouteError: the
+     * order starts at c6 but the AGV is at c3}, and that rejection became the drive's reason).
+     */
+    @Test
+    void anEdgeTheAgvFailedEndsTheDriveWithItsErrorAndNoUpdateIsSentAfterIt() {
+        TrafficControl traffic = new TrafficControl(ring(), 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("C", "c"));
+        List<Sent> orders = new ArrayList<>();
+        RouteDrive drive = new RouteDrive("A", List.of("a", "b", "c"), "o1", traffic, (id, u, n, e) -> orders.add(new Sent(id, u, n, e)),
+                why -> { });
+        assertTrue(drive.start().isEmpty());
+        assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "c is C's: A waits for it");
+        assertInstanceOf(Granted.class, traffic.read(t -> t.request("C", List.of("c", "d"))));
+        traffic.passed("C", "d"); // c is granted to A, in its mailbox
+        int sent = orders.size();
+        AgvState failed = new AgvState(0, "2026-01-01T00:00:00.00Z", "2.1.0", "triad", "a", "o1", 0, null, "a", 0, List.of(), List.of(), null, null,
+                null, false, null, null, null, List.of(), null, "AUTOMATIC",
+                List.of(new AgvError("noProgress", List.of(new Reference("orderId", "o1"), new Reference("edgeId", "a-b")), "obstructed", ErrorLevel.FATAL)),
+                List.of(), null);
+        RouteDrive.Verdict v = drive.onState(failed);
+        assertEquals("noProgress: obstructed", v.failure());
+        assertEquals(sent, orders.size(), "no update stitched at b, where the AGV is not");
+        drive.abandon(false);
+        assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "it may stand on the edge to b: it keeps a-b and b, not c");
     }
 }
