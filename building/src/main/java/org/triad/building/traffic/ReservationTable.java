@@ -46,6 +46,8 @@ public final class ReservationTable {
     private final TreeMap<Long, Request> queue = new TreeMap<>();
     private final Map<Resource, String> blocked = new HashMap<>();
     private final TrafficStats stats;
+    /** Waiting requests refused to let another robot out of a dead end (see {@link #evictFromTheDoor}), not yet taken. */
+    private final List<Refused> displaced = new ArrayList<>();
     private long arrivals;
     /** Arrival keys are this far apart, so that a request can be put between two queued ones (see {@link #overtaking}). */
     private static final long SPACING = 1L << 20;
@@ -200,6 +202,12 @@ public final class ReservationTable {
             return grant(s, q);
         }
         List<String> cycle = cycleThrough(q);
+        if (!cycle.isEmpty() && evictFromTheDoor(s, q, cycle)) {
+            if (fits(q)) {
+                return grant(s, q);
+            }
+            cycle = cycleThrough(q);
+        }
         if (!cycle.isEmpty()) {
             Optional<Request> ahead = overtaking(q);
             if (ahead.isPresent()) {
@@ -217,6 +225,45 @@ public final class ReservationTable {
         queue.put(q.arrival, q);
         s.pending = q;
         return new Waiting(robot, waitOf(q));
+    }
+
+    /**
+     * Rule 3's dead-end case: the robot asks to come out of a dead end whose door (its only way out) a robot stands at,
+     * waiting to go in. Each waits for the other, and refusing the one inside would leave both where they are for good:
+     * it has nowhere to go but through the door. So the one at the door is refused instead (its wait withdrawn, a
+     * {@link Refused} naming both, collected for {@link #takeDisplaced}): it has somewhere else to go, and the one
+     * inside queues for the door behind it. Only a wait is withdrawn, so no wait-for edge is added.
+     *
+     * @return whether a robot at the door was refused
+     */
+    private boolean evictFromTheDoor(RobotState s, Request q, List<String> cycle) {
+        String room = s.position;
+        if (!room.equals(s.decisionPoint()) || map.neighbours(room).size() != 1) {
+            return false;
+        }
+        String door = map.neighbours(room).iterator().next();
+        for (String h : List.copyOf(holders(map.node(door)))) {
+            RobotState b = robots.get(h);
+            if (h.equals(s.name) || b.lost != null || b.pending == null || !cycle.contains(h) || !b.decisionPoint().equals(door)
+                    || b.pending.stretch.size() < 2 || !b.pending.stretch.get(1).equals(room)) {
+                continue;
+            }
+            withdraw(b);
+            displaced.add(new Refused(h, "deadlock avoided: " + h + " waits at " + door + " to go into the dead end " + room + ", and "
+                    + s.name + " in there can only come out through " + door + "; " + h + " makes way", List.of(h, s.name)));
+            return true;
+        }
+        return false;
+    }
+
+    /**
+     * The waiting requests that the last {@link #request} refused to let its robot through (robots waiting at the door
+     * of a dead end the requester came out of: see rule 3), once; the caller tells those robots.
+     */
+    public List<Refused> takeDisplaced() {
+        List<Refused> d = List.copyOf(displaced);
+        displaced.clear();
+        return d;
     }
 
     /** The index of the first stop node of the route after index {@code from} (or the route's last index). */

@@ -115,6 +115,36 @@ class ReservationTableTest {
         assertEquals(route("e", "m"), g1.stretch());
     }
 
+    /**
+     * The service's benchmark jammed on this (courier-4 at c1, courier-3 in the storage room, for the whole run): a robot
+     * standing at the door of a dead end waits to go in, and the robot inside asks to come out. Refusing the one inside,
+     * as rule 3 did, left both where they were: it has no other way out. The one at the door is refused instead.
+     */
+    @Test
+    void aRobotComingOutOfADeadEndIsQueuedAndTheOneWaitingAtItsDoorIsRefusedToMakeWay() {
+        TrafficMap map = TrafficMap.builder().node("w").node("m").node("e").node("room").edge("w", "m").edge("m", "e").edge("m", "room").build();
+        ReservationTable t = table(map);
+        t.place("r1", "room");
+        t.place("r2", "m"); // its last route ended at the door
+        assertInstanceOf(Waiting.class, t.request("r2", route("m", "room")));
+        assertEquals(List.of(), t.takeDisplaced());
+        Waiting out = assertInstanceOf(Waiting.class, t.request("r1", route("room", "m", "e")), "not refused: it waits for r2 to go");
+        assertEquals(List.of("r2"), out.queued().blockers());
+        List<Refused> displaced = t.takeDisplaced();
+        assertEquals(1, displaced.size());
+        assertEquals("r2", displaced.get(0).robot());
+        assertEquals(List.of("r2", "r1"), displaced.get(0).cycle());
+        assertTrue(displaced.get(0).reason().contains("r2 makes way"), displaced.get(0).reason());
+        assertTrue(t.waiting("r2").isEmpty(), "r2's wait for the room is withdrawn");
+        assertTrue(t.takeDisplaced().isEmpty(), "told once");
+        // r2 steps aside to w; the door is free and r1 comes out
+        assertInstanceOf(Granted.class, t.request("r2", route("m", "w")));
+        Changes c = driveBase(t, "r2");
+        assertEquals(List.of("r1"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(route("room", "m"), t.base("r1"));
+        assertEquals(java.util.Map.of(), t.waitsFor());
+    }
+
     @Test
     void headToHeadBetweenNodesForOneRobotIsRefusedAsADeadlockAndResolvedByYieldingToASideNode() {
         ReservationTable t = table(Maps.singleLane(1));

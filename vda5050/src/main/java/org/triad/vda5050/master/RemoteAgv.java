@@ -472,7 +472,7 @@ public final class RemoteAgv implements FailureExplaining {
         }
         awaitAbandonedOrderEnded();
         String from = traffic.decisionPoint(name());
-        Optional<String> side = traffic.aside(name());
+        Optional<String> side = traffic.wayOut(name());
         if (side.isEmpty()) {
             // nowhere to go: one of the robots it would have waited for makes way instead
             Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
@@ -485,8 +485,11 @@ public final class RemoteAgv implements FailureExplaining {
         traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of "
                 + drive.refusal().map(r -> r.cycle().toString()).orElse("a robot refused as a deadlock"));
         boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false);
+        // could not get out of the way: one of the robots it would have waited for makes way instead, as when it had nowhere to go
+        Optional<String> other = moved ? Optional.empty() : drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
         synchronized (lock) {
-            lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure);
+            lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure
+                    + other.map(o -> "; so " + o + " makes way").orElse(""));
             lastCause = cause; // the drive's end is what the call failed of; stepping aside is how it got out of the way
         }
     }

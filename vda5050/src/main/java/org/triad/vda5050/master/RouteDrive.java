@@ -62,7 +62,7 @@ final class RouteDrive {
     private boolean strandedOnEdge;
     /** The drive ended at its decision point (refused, a wait over the bound, a door shut): the AGV drives on to it. */
     private boolean endedHere;
-    /** The drive ended to make way for a robot refused as a deadlock. */
+    /** The drive ended to make way for another robot (one refused as a deadlock, or one coming out of a dead end). */
     private boolean madeWay;
     /** Traffic control's refusal that ended the drive, if one did. */
     private Refused refusal;
@@ -132,11 +132,23 @@ final class RouteDrive {
         if (traffic.isLost(robot)) {
             return new Verdict(false, "traffic control lost AGV " + robot);
         }
+        if (orderId.equals(s.orderId())) {
+            // the AGV's own failure first: a stretch granted meanwhile would otherwise be sent as an order update stitched
+            // at the decision point, which the AGV, its order already aborted where it stopped, rejects (noRouteError: the
+            // order starts at c6 but the AGV is at c3), and that rejection, not the failure, became the drive's reason
+            for (AgvError e : s.errors()) {
+                if (orderId.equals(e.reference("orderId"))) {
+                    strandedOnEdge = e.reference("edgeId") != null;
+                    return new Verdict(false, e.describe());
+                }
+            }
+        }
         Optional<Decision> d = traffic.take(robot);
         if (d.isPresent() && waiting) {
             waiting = false;
             if (d.get() instanceof Refused r) {
                 refusal = r;
+                madeWay = traffic.displaced(robot);
                 return endHere(r.reason(), deadlockAvoided());
             }
             Optional<String> shut = extend((Granted) d.get());
@@ -156,12 +168,6 @@ final class RouteDrive {
         }
         if (!orderId.equals(s.orderId())) {
             return Verdict.RUNNING;
-        }
-        for (AgvError e : s.errors()) {
-            if (orderId.equals(e.reference("orderId"))) {
-                strandedOnEdge = e.reference("edgeId") != null;
-                return new Verdict(false, e.describe());
-            }
         }
         int at = s.lastNodeSequenceId() / 2;
         if (s.lastNodeSequenceId() % 2 == 0 && at < route.size() && route.get(at).equals(s.lastNodeId()) && at > passed) {

@@ -110,13 +110,24 @@ public final class TrafficControl {
      */
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
         for (String w : cycle) {
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && aside(w).isPresent()) {
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && wayOut(w).isPresent()) {
                 makingWay.add(w);
                 log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
                 return Optional.of(w);
             }
         }
         return Optional.empty();
+    }
+
+    /** Robots whose wait at the door of a dead end the table refused, to let the robot inside out (see {@link #displaced}). */
+    private final java.util.Set<String> displaced = new java.util.HashSet<>();
+
+    /**
+     * Whether the robot's last refusal was to let a robot out of the dead end at whose door it waited (once): it makes
+     * way, stepping aside even if its caller drove it without (it is the only one who can move).
+     */
+    synchronized boolean displaced(String robot) {
+        return displaced.remove(robot);
     }
 
     /** Whether the robot was asked to make way while it waits: its wait withdrawn (once). */
@@ -163,6 +174,44 @@ public final class TrafficControl {
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * Where a robot that has to get out of the others' way goes: a free neighbour ({@link #aside}) if there is one,
+     * else the neighbouring stop node for one that the fewest others hold or wait for (never the lift, a taken dead end,
+     * nor a place a lost robot blocks). It may have to wait for that one (an ordinary request: queued only without a
+     * cycle); before, a robot with no free neighbour stayed where it was, and a robot at the door of a dead end kept the
+     * one inside shut in for good (the service's benchmark: courier-4 at {@code c1}, courier-3 in the storage room).
+     */
+    synchronized Optional<String> wayOut(String robot) {
+        Optional<String> free = aside(robot);
+        if (free.isPresent() || !table.robots().contains(robot) || table.isLost(robot)) {
+            return free;
+        }
+        String at = table.decisionPoint(robot);
+        String best = null;
+        int fewest = Integer.MAX_VALUE;
+        for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
+            if (!table.map().isStop(n) || table.map().node(n).capacity() > 1) {
+                continue;
+            }
+            if (table.map().neighbours(n).equals(java.util.Set.of(at)) && !table.needing(table.map().node(n)).isEmpty()) {
+                continue; // a taken dead end off here: who is in it can only come out through where this robot stands
+            }
+            int others = 0;
+            boolean usable = true;
+            for (Resource r : table.map().step(at, n)) {
+                java.util.Set<String> needing = new java.util.HashSet<>(table.needing(r));
+                needing.remove(robot);
+                others += needing.size();
+                usable &= r.kind() != Resource.Kind.LIFT && table.holders(r).stream().noneMatch(table::isLost);
+            }
+            if (usable && others < fewest) {
+                best = n;
+                fewest = others;
+            }
+        }
+        return Optional.ofNullable(best);
     }
 
     public double waitBoundSeconds() {
@@ -249,7 +298,13 @@ public final class TrafficControl {
     synchronized Decision request(String robot, List<String> route) {
         mailbox.remove(robot);
         requests++;
-        return table.request(robot, route);
+        Decision d = table.request(robot, route);
+        for (Refused r : table.takeDisplaced()) { // robots waiting at the door of the dead end this one comes out of
+            log.accept("traffic: " + r.reason());
+            mailbox.put(r.robot(), r);
+            displaced.add(r.robot());
+        }
+        return d;
     }
 
     /** How many stretches robots asked for so far (each a reservation granted, queued or refused): a benchmark's denominator. */

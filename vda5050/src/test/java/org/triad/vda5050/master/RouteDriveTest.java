@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -15,7 +16,10 @@ import org.junit.jupiter.api.Test;
 import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.vda5050.protocol.AgvState;
+import org.triad.vda5050.protocol.Messages.AgvError;
 import org.triad.vda5050.protocol.Messages.Edge;
+import org.triad.vda5050.protocol.Messages.ErrorLevel;
+import org.triad.vda5050.protocol.Messages.Reference;
 import org.triad.vda5050.protocol.Messages.EdgeState;
 import org.triad.vda5050.protocol.Messages.Node;
 import org.triad.vda5050.protocol.Messages.NodeState;
@@ -101,5 +105,78 @@ class RouteDriveTest {
         assertEquals(List.of("a"), traffic.read(t -> t.base("A")));
         assertInstanceOf(Granted.class, traffic.take("C").orElseThrow());
         assertEquals(Map.of(), traffic.read(t -> t.waitsFor()));
+    }
+
+    /**
+     * The two-robot cycle that jammed the service's mixed benchmark for its whole run (courier-3 in the storage room,
+     * courier-4 waiting at its door c1 to go in): the one inside used to be refused again and again, with nowhere to step
+     * aside to, and the one at the door, with no free neighbour either, was never asked to move. Now the one at the door
+     * is refused (it makes way, waiting for a neighbour if it must) and the one inside waits for the door and comes out.
+     */
+    @Test
+    void aRobotWaitingAtTheDoorOfADeadEndMakesWayForTheRobotComingOut() {
+        TrafficMap map = TrafficMap.builder().node("x").node("c0").node("c1").node("c2").node("c3").node("storage")
+                .edge("x", "c0").edge("c0", "c1").edge("c1", "c2").edge("c2", "c3").edge("c1", "storage").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "storage"));
+        assertTrue(traffic.place("B", "c1"));
+        assertTrue(traffic.place("C", "c0"));
+        assertTrue(traffic.place("D", "c2"));
+        assertTrue(traffic.aside("B").isEmpty(), "c0 and c2 are taken: no free neighbour");
+        RouteDrive in = new RouteDrive("B", List.of("c1", "storage"), "oB", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(in.start().isEmpty());
+        assertTrue(traffic.read(t -> t.waiting("B")).isPresent(), "B waits at the door for A's room");
+
+        RouteDrive out = new RouteDrive("A", List.of("storage", "c1", "c2", "c3"), "oA", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(out.start().isEmpty(), "A is not refused: it waits for the door");
+        assertTrue(traffic.read(t -> t.waiting("A")).isPresent());
+        RouteDrive.Verdict v = in.onState(state("oB", "c1", 0, false));
+        assertNotNull(v.failure(), "B's wait for the room ends");
+        assertTrue(v.congestion());
+        assertTrue(v.failure().contains("B makes way"), v.failure());
+        assertTrue(in.deadlockAvoided(), "so B steps aside (RemoteAgv.stepAsideAfter)");
+        in.abandon(false);
+
+        // nowhere free to go: B queues for a neighbour (c0, where C stands idle; not A's room) and goes there when C leaves
+        assertEquals(java.util.Optional.of("c0"), traffic.wayOut("B"));
+        RouteDrive aside = new RouteDrive("B", List.of("c1", "c0"), "oB2", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(aside.start().isEmpty());
+        assertTrue(traffic.read(t -> t.waiting("B")).isPresent());
+        assertInstanceOf(Granted.class, traffic.read(t -> t.request("C", List.of("c0", "x"))));
+        traffic.passed("C", "x");
+        assertNull(aside.onState(state("oB2", "c1", 0, false)).failure(), "B is granted c0");
+        assertNull(aside.onState(state("oB2", "c0", 2, false)).failure());
+        assertInstanceOf(Granted.class, traffic.take("A").orElseThrow(), "B left the door: A comes out");
+        assertEquals(List.of("storage", "c1"), traffic.read(t -> t.base("A")));
+        assertEquals(Map.of(), traffic.read(t -> t.waitsFor()));
+    }
+
+    /**
+     * The AGV failed an edge while a stretch was granted to it: the drive fails with the AGV's error, and no order update
+     * is sent after it (the AGV, its order aborted short of the decision point, rejected one: {@code noRouteError: the
+     * order starts at c6 but the AGV is at c3}, and that rejection became the drive's reason).
+     */
+    @Test
+    void anEdgeTheAgvFailedEndsTheDriveWithItsErrorAndNoUpdateIsSentAfterIt() {
+        TrafficControl traffic = new TrafficControl(ring(), 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("C", "c"));
+        List<Sent> orders = new ArrayList<>();
+        RouteDrive drive = new RouteDrive("A", List.of("a", "b", "c"), "o1", traffic, (id, u, n, e) -> orders.add(new Sent(id, u, n, e)),
+                why -> { });
+        assertTrue(drive.start().isEmpty());
+        assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "c is C's: A waits for it");
+        assertInstanceOf(Granted.class, traffic.read(t -> t.request("C", List.of("c", "d"))));
+        traffic.passed("C", "d"); // c is granted to A, in its mailbox
+        int sent = orders.size();
+        AgvState failed = new AgvState(0, "2026-01-01T00:00:00.00Z", "2.1.0", "triad", "a", "o1", 0, null, "a", 0, List.of(), List.of(), null, null,
+                null, false, null, null, null, List.of(), null, "AUTOMATIC",
+                List.of(new AgvError("noProgress", List.of(new Reference("orderId", "o1"), new Reference("edgeId", "a-b")), "obstructed", ErrorLevel.FATAL)),
+                List.of(), null);
+        RouteDrive.Verdict v = drive.onState(failed);
+        assertEquals("noProgress: obstructed", v.failure());
+        assertEquals(sent, orders.size(), "no update stitched at b, where the AGV is not");
+        drive.abandon(false);
+        assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "it may stand on the edge to b: it keeps a-b and b, not c");
     }
 }

@@ -26,8 +26,8 @@ import org.triad.vda5050.master.TrafficControl;
  * it would shut courier-1 in: courier-1 would be refused as a deadlock, and both would stand until the wait bound):
  * it steps aside to a free neighbouring stop node and waits there for c5 and ward 3 together. Courier-1, sent out,
  * comes out; courier-2 goes in. Both arrive, neither is refused, no contact. Then the other way round: a robot waiting
- * at the door after all, the one inside is refused as a deadlock and has nowhere to step aside to: the one at the door
- * is asked to make way, steps aside, and the one inside comes out.
+ * at the door after all, the one inside asks to come out: it is queued for the door, and the one at the door is refused
+ * (it makes way), steps aside, and the one inside comes out.
  */
 class DeadEndYieldTest {
     @Test
@@ -63,8 +63,9 @@ class DeadEndYieldTest {
             assertEquals("ward3", two.state().orElseThrow().lastNodeId());
             assertNotEquals("c5", aside);
 
-            // courier-1 waits at the door after all (its caller drove it without stepping aside) and courier-2, inside,
-            // is sent out: refused as a deadlock, with nowhere to step aside to, so courier-1 is asked to make way
+            // courier-1 waits at the door after all (its caller drove it without stepping aside) and courier-2, inside, is
+            // sent out: not refused (it has no other way out) but queued for the door, and courier-1's wait is refused, so
+            // it makes way (it steps aside) and courier-2 comes out
             traffic.stepAside(false);
             assertTrue(one.driveRoute(List.of(exit, "c5"), traffic), one.lastFailure() + "\n" + log);
             CompletableFuture<Boolean> blocked = CompletableFuture.supplyAsync(() -> one.driveRoute(List.of("c5", "ward3"), traffic));
@@ -73,16 +74,12 @@ class DeadEndYieldTest {
                 Thread.sleep(10);
             }
             traffic.stepAside(true);
-            assertFalse(two.driveRoute(List.of("ward3", "c5", "c4"), traffic), "refused: courier-1 stands at c5 and waits for ward 3");
-            assertTrue(two.lastFailure().orElseThrow().contains("so triad/courier-1 makes way"), two.lastFailure().orElseThrow());
+            assertTrue(two.driveRoute(List.of("ward3", "c5"), traffic), two.lastFailure() + "\n" + log + "\n" + building.output());
+            assertEquals("c5", two.state().orElseThrow().lastNodeId());
             assertFalse(blocked.get(300, TimeUnit.SECONDS), "courier-1's drive ended: it made way");
-            assertTrue(one.lastFailure().orElseThrow().contains("made way") && one.lastFailure().orElseThrow().contains("stepped aside"),
+            assertTrue(one.lastFailure().orElseThrow().contains("triad/courier-1 makes way") && one.lastFailure().orElseThrow().contains("stepped aside"),
                     one.lastFailure().orElseThrow());
-            String madeWayTo = one.state().orElseThrow().lastNodeId();
-            assertNotEquals("c5", madeWayTo);
-            String out = madeWayTo.equals("c4") ? "c6" : "c4";
-            assertTrue(two.driveRoute(List.of("ward3", "c5", out), traffic), two.lastFailure() + "\n" + log + "\n" + building.output());
-            assertEquals(out, two.state().orElseThrow().lastNodeId());
+            assertNotEquals("c5", one.state().orElseThrow().lastNodeId());
             assertTrue(building.lines("contact courier-").isEmpty(), building.output());
         }
     }
