@@ -343,8 +343,20 @@ final class ProjectionBound {
         private double[] toGoal;
         private double[] costsUsed;
 
+        /** Whether the goal group's values are merged (see the class comment). */
+        final boolean merged;
+        private final int[] otherGroup;
+        private final int nf;
+
         Projection(int goal, int[] own, int[] other, int nf) {
+            this(goal, own, other, nf, false);
+        }
+
+        /** @param merge whether to merge the goal group's values however few the pairs */
+        Projection(int goal, int[] own, int[] other, int nf, boolean merge) {
             this.goal = goal;
+            this.otherGroup = other;
+            this.nf = nf;
             this.ownFacts = own;
             this.otherFacts = other == null ? new int[0] : other;
             width = Math.max(1, otherFacts.length);
@@ -373,7 +385,8 @@ final class ProjectionBound {
             }
             int[] abs = new int[own.length];
             int g = rawOwn[goal];
-            if ((long) own.length * width <= MAX_EXACT_PAIRS) {
+            merged = merge || (long) own.length * width > MAX_EXACT_PAIRS;
+            if (!merged) {
                 for (int i = 0; i < own.length; i++) abs[i] = i;
                 values = own.length;
             } else {
@@ -429,33 +442,53 @@ final class ProjectionBound {
             }
         }
 
-        double cheapest(BitSet facts, double[] values, double[] own) {
+        /** The state's pair, -1 when it is not a state the groups describe. */
+        private int pairOf(BitSet facts) {
             int m0 = -1, x0 = otherFacts.length == 0 ? 0 : -1;
             for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
                 if (f < ownValue.length && ownValue[f] >= 0) m0 = ownValue[f];
                 if (f < otherValue.length && otherValue[f] >= 0) x0 = otherValue[f];
             }
-            if (m0 < 0 || x0 < 0) return 0; // not a state the groups describe: no bound
+            return m0 < 0 || x0 < 0 ? -1 : m0 * width + x0;
+        }
+
+        double cheapest(BitSet facts, double[] values, double[] own) {
+            int p = pairOf(facts);
+            if (p < 0) return 0; // no bound
             if (costsUsed != own) {
                 cheapestDrain = new double[start.length - 1]; // one per pair
                 toGoal = backwards(own, null, resource == null ? null : cheapestDrain);
                 costsUsed = own;
-                charged = null;
                 if (resource != null) {
                     // the least charge any way to the goal spends, and the cheapest way through a refill
                     leastDrain = backwards(resource.drain(), null, null);
                     viaRefill = backwards(own, refillSeeds(own), null);
                 }
             }
-            int p = m0 * width + x0;
             if (values == null || resource == null) return toGoal[p];
             double charge = values[resource.fluent()];
             // the cheapest way fits the charge: nothing is finer (the charge can only make ways dearer)
             if (charge >= cheapestDrain[p] - 1e-9) return toGoal[p];
-            if (charged == null) charged = chargedProjection(own);
             double h = charge < leastDrain[p] - 1e-9 ? Math.max(toGoal[p], viaRefill[p]) : toGoal[p];
-            return charged == null ? h : Math.max(h, charged.cheapest(p, charge));
+            // the charge's dimension on the merged values (an item's place at N waypoints times N robot places
+            // times the charge levels would be too many nodes to search per goal; merged, about 4 N)
+            if (coarse == null) coarse = merged ? this : new Projection(goal, ownFacts, otherGroup, nf, true);
+            return Math.max(h, coarse.withCharge(facts, charge, own));
         }
+
+        /** The cheapest way from the state's pair with this charge in the charge's dimension; 0 where it does not apply. */
+        private double withCharge(BitSet facts, double charge, double[] own) {
+            if (chargedFor != own) {
+                charged = chargedProjection(own);
+                chargedFor = own;
+            }
+            int p = pairOf(facts);
+            return charged == null || p < 0 ? 0 : charged.cheapest(p, charge);
+        }
+
+        /** This projection with the goal group's values merged (itself when they are), made when first needed. */
+        private Projection coarse;
+        private double[] chargedFor;
 
         private double[] leastDrain;
         private double[] viaRefill;
