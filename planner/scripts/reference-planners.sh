@@ -30,6 +30,6 @@ python3 -m venv "$out/enhsp-venv"
 "$out/enhsp-venv/bin/pip" install -q up-enhsp
 jar=$(find "$out/enhsp-venv" -name enhsp.jar | head -1)
 
-echo "METRIC_FF=$out/mff/v2.1/ff"
+echo "METRIC_FF=$out/mff/ff-v2.1" # the makefile writes the binary one level up
 echo "VALIDATE=$out/val/build/bin/Validate"
 echo "ENHSP_JAR=$jar"

@@ -26,6 +26,10 @@ import java.util.List;
 final class ProjectionBound {
     /** Pairs of values beyond which the other group is left out of a projection (its table would be large). */
     private static final long MAX_PAIRS = 50_000_000;
+    /** Charge levels at most, and at least (fewer: no charge dimension), and nodes at most of a charged projection. */
+    private static final int MAX_LEVELS = 256;
+    private static final int MIN_LEVELS = 16;
+    private static final long MAX_CHARGED_NODES = 2_000_000;
     /** Pairs up to which every value of the goal's group is kept apart (above, most are merged). */
     private static final long MAX_EXACT_PAIRS = 100_000;
 
@@ -339,8 +343,20 @@ final class ProjectionBound {
         private double[] toGoal;
         private double[] costsUsed;
 
+        /** Whether the goal group's values are merged (see the class comment). */
+        final boolean merged;
+        private final int[] otherGroup;
+        private final int nf;
+
         Projection(int goal, int[] own, int[] other, int nf) {
+            this(goal, own, other, nf, false);
+        }
+
+        /** @param merge whether to merge the goal group's values however few the pairs */
+        Projection(int goal, int[] own, int[] other, int nf, boolean merge) {
             this.goal = goal;
+            this.otherGroup = other;
+            this.nf = nf;
             this.ownFacts = own;
             this.otherFacts = other == null ? new int[0] : other;
             width = Math.max(1, otherFacts.length);
@@ -369,7 +385,8 @@ final class ProjectionBound {
             }
             int[] abs = new int[own.length];
             int g = rawOwn[goal];
-            if ((long) own.length * width <= MAX_EXACT_PAIRS) {
+            merged = merge || (long) own.length * width > MAX_EXACT_PAIRS;
+            if (!merged) {
                 for (int i = 0; i < own.length; i++) abs[i] = i;
                 values = own.length;
             } else {
@@ -425,35 +442,76 @@ final class ProjectionBound {
             }
         }
 
-        double cheapest(BitSet facts, double[] values, double[] own) {
+        /** The state's pair, -1 when it is not a state the groups describe. */
+        private int pairOf(BitSet facts) {
             int m0 = -1, x0 = otherFacts.length == 0 ? 0 : -1;
             for (int f = facts.nextSetBit(0); f >= 0; f = facts.nextSetBit(f + 1)) {
                 if (f < ownValue.length && ownValue[f] >= 0) m0 = ownValue[f];
                 if (f < otherValue.length && otherValue[f] >= 0) x0 = otherValue[f];
             }
-            if (m0 < 0 || x0 < 0) return 0; // not a state the groups describe: no bound
+            return m0 < 0 || x0 < 0 ? -1 : m0 * width + x0;
+        }
+
+        double cheapest(BitSet facts, double[] values, double[] own) {
+            int p = pairOf(facts);
+            if (p < 0) return 0; // no bound
             if (costsUsed != own) {
-                toGoal = backwards(own, null);
+                cheapestDrain = new double[start.length - 1]; // one per pair
+                toGoal = backwards(own, null, resource == null ? null : cheapestDrain);
                 costsUsed = own;
                 if (resource != null) {
                     // the least charge any way to the goal spends, and the cheapest way through a refill
-                    leastDrain = backwards(resource.drain(), null);
-                    viaRefill = backwards(own, refillSeeds(own));
+                    leastDrain = backwards(resource.drain(), null, null);
+                    viaRefill = backwards(own, refillSeeds(own), null);
                 }
             }
-            int p = m0 * width + x0;
-            if (values != null && resource != null && values[resource.fluent()] < leastDrain[p] - 1e-9) return Math.max(toGoal[p], viaRefill[p]);
-            return toGoal[p];
+            if (values == null || resource == null) return toGoal[p];
+            double charge = values[resource.fluent()];
+            // the cheapest way fits the charge: nothing is finer (the charge can only make ways dearer)
+            if (charge >= cheapestDrain[p] - 1e-9) return toGoal[p];
+            double h = charge < leastDrain[p] - 1e-9 ? Math.max(toGoal[p], viaRefill[p]) : toGoal[p];
+            // the charge's dimension on the merged values (an item's place at N waypoints times N robot places
+            // times the charge levels would be too many nodes to search per goal; merged, about 4 N)
+            if (coarse == null) coarse = merged ? this : new Projection(goal, ownFacts, otherGroup, nf, true);
+            return Math.max(h, coarse.withCharge(facts, charge, own));
         }
+
+        /** The cheapest way from the state's pair with this charge in the charge's dimension; 0 where it does not apply. */
+        private double withCharge(BitSet facts, double charge, double[] own) {
+            if (chargedFor != own) {
+                charged = chargedProjection(own);
+                chargedFor = own;
+            }
+            int p = pairOf(facts);
+            return charged == null || p < 0 ? 0 : charged.cheapest(p, charge);
+        }
+
+        /** This projection with the goal group's values merged (itself when they are), made when first needed. */
+        private Projection coarse;
+        private double[] chargedFor;
 
         private double[] leastDrain;
         private double[] viaRefill;
+        /** Per pair, the charge the way {@link #toGoal} found spends. */
+        private double[] cheapestDrain;
+        /** The charge as a third dimension, made the first time a state's charge is below its cheapest way's. */
+        private ChargedProjection charged;
 
         /** Per pair where a refill applies (its group conditions hold there): its cost plus the way on from where it leaves. */
         private double[] refillSeeds(double[] own) {
-            int pairs = values * width;
-            double[] seed = new double[pairs];
+            double[] seed = new double[values * width];
             Arrays.fill(seed, Double.POSITIVE_INFINITY);
+            for (int[] r : refills()) {
+                // the plan's last refill leaves at most the ceiling, which must then suffice for the rest
+                if (leastDrain[r[1]] > resource.ceiling() + 1e-9) continue;
+                seed[r[0]] = Math.min(seed[r[0]], own[r[2]] + toGoal[r[1]]);
+            }
+            return seed;
+        }
+
+        /** Every refill's transitions: {pair it applies in, pair it leaves, instance}. */
+        private List<int[]> refills() {
+            List<int[]> out = new ArrayList<>();
             for (int o = 0; o < task.ops.size(); o++) {
                 if (!resource.refill()[o]) continue;
                 int no = -1, nx = -1, so = -1, sx = -1;
@@ -471,21 +529,95 @@ final class ProjectionBound {
                     if (no >= 0 && no != m) continue;
                     for (int x = 0; x < width; x++) {
                         if (nx >= 0 && nx != x) continue;
-                        int after = (so >= 0 ? so : m) * width + (sx >= 0 ? sx : x);
-                        // the plan's last refill leaves at most the ceiling, which must then suffice for the rest
-                        if (leastDrain[after] > resource.ceiling() + 1e-9) continue;
-                        seed[m * width + x] = Math.min(seed[m * width + x], own[o] + toGoal[after]);
+                        out.add(new int[] { m * width + x, (so >= 0 ? so : m) * width + (sx >= 0 ? sx : x), o });
                     }
                 }
             }
-            return seed;
+            return out;
+        }
+
+        /**
+         * The projection with the charge as a third dimension, or null where it does not apply (a refill
+         * that does not assign a constant, or more than {@link #MAX_CHARGED_NODES} nodes even at
+         * {@link #MIN_LEVELS} levels). Charge is counted in {@code unit}s: 1 when every drain, the
+         * ceiling and the start are whole and at most {@link #MAX_LEVELS}, else the largest charge over
+         * the levels. <b>Still a lower bound:</b> a state's charge is rounded up to a level and every drain
+         * down, so the level never falls below the charge along any plan's projected path; a refill leaves
+         * the larger of the level it finds and the ceiling's (an assignment of the ceiling leaves exactly
+         * it; a conditional one, or one where the charge was higher, no more); its own condition (a charge
+         * below capacity) is dropped. Every plan maps to a path here of no larger cost.
+         */
+        private ChargedProjection chargedProjection(double[] own) {
+            double full = resource.ceiling();
+            double most = Math.max(full, task.initValues[resource.fluent()]);
+            if (!Double.isFinite(most) || !(most > 0)) return null;
+            int pairs = values * width;
+            long cap = Math.min(MAX_LEVELS, MAX_CHARGED_NODES / pairs);
+            if (cap < MIN_LEVELS) return null;
+            boolean whole = most == Math.rint(most) && full == Math.rint(full) && most < cap;
+            for (int o = 0; o < task.ops.size() && whole; o++) whole = resource.drain()[o] == Math.rint(resource.drain()[o]);
+            double unit = whole ? 1 : most / (cap - 1);
+            int levels = (int) Math.ceil(most / unit - 1e-9) + 1;
+            int fullLevel = (int) Math.ceil(full / unit - 1e-9);
+            int[] drainLevels = new int[task.ops.size()];
+            for (int o = 0; o < drainLevels.length; o++) drainLevels[o] = (int) Math.floor(resource.drain()[o] / unit + 1e-9);
+            // refills by the pair they leave (a CSR as the transitions)
+            List<int[]> refills = refills();
+            int[] refillStart = new int[pairs + 1];
+            for (int[] r : refills) refillStart[r[1] + 1]++;
+            for (int q = 0; q < pairs; q++) refillStart[q + 1] += refillStart[q];
+            int[] refillFrom = new int[refills.size()];
+            int[] refillVia = new int[refills.size()];
+            int[] fill = Arrays.copyOf(refillStart, pairs);
+            for (int[] r : refills) {
+                refillFrom[fill[r[1]]] = r[0];
+                refillVia[fill[r[1]]++] = r[2];
+            }
+            double[] d = new double[pairs * levels];
+            Arrays.fill(d, Double.POSITIVE_INFINITY);
+            NodeHeap heap = new NodeHeap();
+            for (int x = 0; x < width; x++) {
+                for (int c = 0; c < levels; c++) {
+                    int node = (goalValue * width + x) * levels + c;
+                    d[node] = 0;
+                    heap.push(0, node);
+                }
+            }
+            while (!heap.isEmpty()) {
+                double cost = Double.longBitsToDouble(heap.topKey());
+                int node = heap.pop();
+                if (cost > d[node]) continue;
+                int q = node / levels;
+                int c = node % levels;
+                for (int k = start[q]; k < start[q + 1]; k++) {
+                    int pc = c + drainLevels[via[k]];
+                    if (pc >= levels) continue;
+                    relax(d, heap, from[k] * levels + pc, cost + own[via[k]]);
+                }
+                if (c < fullLevel) continue;
+                for (int k = refillStart[q]; k < refillStart[q + 1]; k++) {
+                    double nc = cost + own[refillVia[k]];
+                    int base = refillFrom[k] * levels;
+                    if (c > fullLevel) relax(d, heap, base + c, nc); // a charge above the ceiling's level is kept
+                    else for (int pc = 0; pc <= fullLevel; pc++) relax(d, heap, base + pc, nc);
+                }
+            }
+            return new ChargedProjection(unit, levels, d);
+        }
+
+        private static void relax(double[] d, NodeHeap heap, int node, double cost) {
+            if (cost < d[node]) {
+                d[node] = cost;
+                heap.push(Double.doubleToLongBits(cost), node);
+            }
         }
 
         /**
          * Dijkstra along the reversed transitions, each instance weighing {@code weight[o]}, from every pair
-         * with the goal's value at 0 ({@code seeds} null) or from every pair at its seed.
+         * with the goal's value at 0 ({@code seeds} null) or from every pair at its seed; with
+         * {@code drainAlong}, fills in per pair the charge its way found spends.
          */
-        private double[] backwards(double[] weight, double[] seeds) {
+        private double[] backwards(double[] weight, double[] seeds, double[] drainAlong) {
             double[] own = weight;
             int pairs = values * width;
             double[] d = new double[pairs];
@@ -513,11 +645,21 @@ final class ProjectionBound {
                     int p = from[k];
                     if (nc < d[p]) {
                         d[p] = nc;
+                        if (drainAlong != null) drainAlong[p] = drainAlong[q] + resource.drain()[via[k]];
                         heap.push(Double.doubleToLongBits(nc), p);
                     }
                 }
             }
             return d;
+        }
+    }
+
+    /** Costs to the goal per (pair, charge level): {@code toGoal[pair * levels + level]}. */
+    private record ChargedProjection(double unit, int levels, double[] toGoal) {
+        /** The cheapest way from this pair with this charge (rounded up to its level); 0 above the top level. */
+        double cheapest(int pair, double charge) {
+            int level = Math.max(0, (int) Math.ceil(charge / unit - 1e-9));
+            return level >= levels ? 0 : toGoal[pair * levels + level];
         }
     }
 }

@@ -74,6 +74,42 @@ class ProjectionBoundTest {
         assertTrue(r.plan().toPddl().contains("(charge r1 c)"), r.plan().toPddl());
     }
 
+    /**
+     * 60 m between neighbours, a dock at each place, 100 of charge: fetching the box from d and bringing
+     * it to a needs a recharge before every leg but the first, five in all. With the charge as a
+     * dimension of the projection the bound counts all five (360 m, pick, drop, 5 recharges: 367, the
+     * plan's cost); reading only whether one is needed, it was 363.
+     */
+    @Test
+    void everyRechargeATripNeedsIsCounted() {
+        Problem far = farDelivery("60");
+        assertEquals(367, initialBound(far), 1e-9);
+        SolveResult r = NumericSearch.solve(DOMAIN, far, Duration.ofSeconds(60));
+        assertTrue(r.isSolved(), r.message());
+        assertEquals(367, PlanValidator.metricValue(DOMAIN, far, r.plan()).orElseThrow(), 1e-9);
+    }
+
+    /** Legs of 60.4 m: the charge is counted in 256 levels of 100/255, drains rounded down, and the bound still meets the cost. */
+    @Test
+    void fractionalDrainsAreCountedInLevelsAndStillBound() {
+        Problem far = farDelivery("60.4");
+        assertEquals(6 * 60.4 + 7, initialBound(far), 1e-6);
+        SolveResult r = NumericSearch.solve(DOMAIN, far, Duration.ofSeconds(60));
+        assertTrue(r.isSolved(), r.message());
+        assertEquals(6 * 60.4 + 7, PlanValidator.metricValue(DOMAIN, far, r.plan()).orElseThrow(), 1e-6);
+    }
+
+    private static Problem farDelivery(String leg) {
+        return PddlParser.parseProblem("""
+                (define (problem far) (:domain courier)
+                  (:objects a b c d - place r1 - robot parcel - box)
+                  (:init (at r1 a) (empty r1) (box-at parcel d) (dock a) (dock b) (dock c) (dock d)
+                    (adj a b) (adj b a) (adj b c) (adj c b) (adj c d) (adj d c)
+                    (= (dist a b) %1$s) (= (dist b a) %1$s) (= (dist b c) %1$s) (= (dist c b) %1$s) (= (dist c d) %1$s) (= (dist d c) %1$s)
+                    (= (battery) 100) (= (total-cost) 0))
+                  (:goal (box-at parcel a)) (:metric minimize (total-cost)))""".formatted(leg), "far.pddl");
+    }
+
     @Test
     void aDeliveryIsBoundedByBothLegs() {
         Problem one = problem("r1", "(at r1 b) (empty r1)");
