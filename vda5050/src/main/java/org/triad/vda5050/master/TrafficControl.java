@@ -164,7 +164,11 @@ public final class TrafficControl {
                 continue; // a hall for several (the lobby) has one waypoint, which all robots stepping aside into it would drive to
             }
             boolean free = true;
+            java.util.Set<Resource> held = table.holding(robot);
             for (Resource r : table.map().step(at, n)) {
+                if (held.contains(r)) {
+                    continue; // a zone it stands in already
+                }
                 java.util.Set<String> others = new java.util.HashSet<>(table.needing(r));
                 others.remove(robot);
                 free &= r.kind() != Resource.Kind.LIFT && others.size() + 1 <= r.capacity();
@@ -179,7 +183,7 @@ public final class TrafficControl {
     /**
      * Where a robot that has to get out of the others' way goes: a free neighbour ({@link #aside}) if there is one,
      * else the neighbouring stop node for one that the fewest others hold or wait for (never the lift, a taken dead end,
-     * nor a place a lost robot blocks). It may have to wait for that one (an ordinary request: queued only without a
+     * a place a lost robot blocks, nor one held by a robot that waits for this one). It may have to wait for that one (an ordinary request: queued only without a
      * cycle); before, a robot with no free neighbour stayed where it was, and a robot at the door of a dead end kept the
      * one inside shut in for good (the service's benchmark: courier-4 at {@code c1}, courier-3 in the storage room).
      */
@@ -189,6 +193,7 @@ public final class TrafficControl {
             return free;
         }
         String at = table.decisionPoint(robot);
+        Map<String, java.util.Set<String>> waitsFor = table.waitsFor();
         String best = null;
         int fewest = Integer.MAX_VALUE;
         for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
@@ -200,11 +205,17 @@ public final class TrafficControl {
             }
             int others = 0;
             boolean usable = true;
+            java.util.Set<Resource> held = table.holding(robot);
             for (Resource r : table.map().step(at, n)) {
+                if (held.contains(r)) {
+                    continue;
+                }
                 java.util.Set<String> needing = new java.util.HashSet<>(table.needing(r));
                 needing.remove(robot);
                 others += needing.size();
-                usable &= r.kind() != Resource.Kind.LIFT && table.holders(r).stream().noneMatch(table::isLost);
+                // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out
+                usable &= r.kind() != Resource.Kind.LIFT && table.holders(r).stream()
+                        .noneMatch(h -> table.isLost(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot));
             }
             if (usable && others < fewest) {
                 best = n;
