@@ -42,6 +42,7 @@ check "$pharmacy" Morning "Delivered(saline, wardB)"
 check "$pharmacy" Morning "Charged(100.0)"
 check "$hospital" Morning "IsAt(ward3)"
 check "$hospital" Morning "Delivered(gauze, ward1)"
-check "$hospital" Morning "FollowedTo(alice, ward2)"
+check "$hospital" Morning "FollowedTo(bob, ward3)"
+check "$hospital" Morning "PersonAt(alice, xray)"
 check "$hospital" Evening "Charged(lobby)"
 exit $status

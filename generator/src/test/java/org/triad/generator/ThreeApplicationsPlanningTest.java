@@ -39,7 +39,7 @@ class ThreeApplicationsPlanningTest {
 	// (15 steps, HospitalBatteryPlanningTest says more).
 	@ParameterizedTest(name = "{0}: {2}({3}) from {1}")
 	@CsvSource(delimiter = ';', value = { "logistics;Floor;IsAt;library;4", "logistics;Floor;IsAt;lab;3",
-			"hospital;Evening;Delivered;gauze ward1;15", "hospital;Evening;FollowedTo;alice ward2;8",
+			"hospital;Evening;Delivered;gauze ward1;15", "hospital;Evening;FollowedTo;bob ward2;4",
 			"lab;Bench;Reached;analyser;3", "lab;Bench;Analysed;s1 analyser;7", "lab;Bench;Reached;store;1" })
 	void goalIsPlannedAndThePlanChecks(String app, String situation, String goal, String args, int length) {
 		AppSchemaAndState s = load(app, situation);

@@ -41,7 +41,7 @@ class Pddl4jOnHospitalTest {
 	}
 
 	@ParameterizedTest
-	@CsvSource({ "IsAt,ward3,", "Delivered,gauze,ward1", "FollowedTo,alice,ward2" })
+	@CsvSource({ "IsAt,ward3,", "Delivered,gauze,ward1", "FollowedTo,bob,ward3" })
 	void pddl4jRefusesTheHospitalsBatteryNamingIt(String goal, String a, String b) {
 		List<Object> args = new ArrayList<>();
 		args.add(morning.object(a).orElseThrow());

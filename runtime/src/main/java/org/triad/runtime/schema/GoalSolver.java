@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
+import org.triad.runtime.app.Atom;
 import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.Plan;
 import org.triad.runtime.app.State;
@@ -208,8 +209,9 @@ public final class GoalSolver {
 	 * The quantities without arguments (a battery, a load limit) in a state that stand in the way of {@code goal},
 	 * as the models name them, each with what reaching the goal needs of it: {@code Courier.battery() is 12.0 and
 	 * the trip needs 30.0 }. The need is measured on a plan for the goal from the same state with only that
-	 * quantity made plentiful ({@link #PLENTY}): how far that plan draws it down (the least value along the plan,
-	 * below the plentiful start; quantities are separated by commas). Plans are of least cost, so with moves
+	 * quantity made plentiful ({@link #PLENTY}): the least start from which that plan runs, which is how far it draws
+	 * the quantity down plus what its preconditions keep in hand (a battery reserve); quantities are separated by
+	 * commas. Plans are of least cost, so with moves
 	 * costing their length it is what the shortest trip draws, an upper bound on the least need. A quantity the
 	 * plan does not draw down (a payload limit) gets "and the trip needs more". A quantity whose plenty does not
 	 * help (the load, a drain per metre, a battery where an item is missing) is left out; when none helps, this is
@@ -234,8 +236,9 @@ public final class GoalSolver {
 					s = transitions.apply(a, s);
 					least = Math.min(least, s.valueOf(atom).map(v -> ((Number) v).doubleValue()).orElse(PLENTY));
 				}
-				double need = PLENTY - least;
-				if (need > 1e-9) {
+				double drawn = PLENTY - least;
+				if (drawn > 1e-9) {
+					double need = leastStart(o.plan(), atom, state, drawn, value instanceof Integer);
 					b.append(" and the trip needs ").append(number(need, value instanceof Integer));
 				} else {
 					b.append(" and the trip needs more");
@@ -244,6 +247,42 @@ public final class GoalSolver {
 			}
 		}
 		return parts.isEmpty() ? "" : String.join(", ", parts) + " ";
+	}
+
+	/**
+	 * The least value of {@code atom} from which {@code plan} can be executed in {@code state}: at least what it draws,
+	 * more where its preconditions keep something in hand (a move that must leave a battery reserve needs the draw
+	 * plus the reserve). Found by bisection between the draw and {@link #PLENTY}, where the plan was found, as
+	 * executing a plan that draws a quantity down only gets easier the more of it there is at the start.
+	 */
+	private double leastStart(Plan plan, Atom atom, State state, double drawn, boolean integer) {
+		double low = integer ? Math.ceil(drawn) : drawn;
+		if (executable(plan, atom, state, low, integer)) {
+			return low;
+		}
+		double high = PLENTY;
+		// low fails and high succeeds: halve the gap down to a thousandth (a whole unit for an int)
+		while (high - low > (integer ? 1 : 1e-4)) {
+			double mid = integer ? Math.floor((low + high) / 2) : (low + high) / 2;
+			if (executable(plan, atom, state, mid, integer)) {
+				high = mid;
+			} else {
+				low = mid;
+			}
+		}
+		return high;
+	}
+
+	private boolean executable(Plan plan, Atom atom, State state, double start, boolean integer) {
+		Transitions transitions = new Transitions(schema);
+		State s = state.toBuilder().value(atom, integer ? (Object) (int) start : (Object) start).build();
+		for (var a : plan.actions()) {
+			if (!transitions.isApplicable(a, s)) {
+				return false;
+			}
+			s = transitions.apply(a, s);
+		}
+		return true;
 	}
 
 	/** A need as the models write numbers: an int as an int, a double rounded to 3 decimals ({@code 30.0}, {@code 2.47}). */

@@ -62,6 +62,11 @@ public final class HospitalFloor {
     public static final List<ControlledDoor> CONTROLLED_DOORS = List.of(new ControlledDoor(PHARMACY_DOOR, "c0", "pharmacy"));
     /** People of the model with where they stand at the start (Alice a visitor, Bob a patient). */
     public static final Map<String, Vec2> PEOPLE = orderedMap("alice", new Vec2(5.6, 2.0), "bob", new Vec2(21.2, 3.4));
+    /**
+     * The people who walk their own way ({@code Building.walksAhead}): Bob, a patient on his feet, whom the courier
+     * follows; Alice, a visitor, does not know the way and is guided.
+     */
+    public static final java.util.Set<String> WALKING_AHEAD = java.util.Set.of("bob");
     /** Walking speeds, m/s: Bob, a patient, walks slower than the robot drives, so it can keep up with him round corners. */
     public static final Map<String, Double> WALKING_SPEED = Map.of("alice", 1.0, "bob", 0.7);
     /** Where the robot starts (the model's Morning: in the lobby). */

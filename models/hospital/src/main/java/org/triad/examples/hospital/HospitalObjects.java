@@ -26,6 +26,14 @@ public final class HospitalObjects {
      * visibly and a day's deliveries need the dock.
      */
     public static final double DRAIN_PERCENT_PER_METRE = 0.5;
+    /**
+     * The charge a plan keeps in hand, percent of a full battery: the models' {@code Courier.reserve()} (the situations
+     * state it). A move is planned only when it leaves this much, because what a courier drives is not exactly the
+     * models' metres (the corridors' lengths between waypoint centres): it follows people who stop and go on, steers
+     * round others, drives onto the dock. A plan that ran the battery to 0 % in the models would leave nothing for
+     * that; the module's README gives the measured figures.
+     */
+    public static final double RESERVE_PERCENT = 5.0;
     /** Traction energy per metre driven, J/m (the simulation's default). */
     private static final double JOULES_PER_METRE = 50;
     /** Charging power at the dock, W (the simulation's default): 20 s from empty to full. */

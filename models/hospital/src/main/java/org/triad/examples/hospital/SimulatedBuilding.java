@@ -96,6 +96,12 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         return objects.waypoint(whereabouts.of(p.name(), person.position()));
     }
 
+    /** Whether the person walks their own way ({@link HospitalFloor#WALKING_AHEAD}): then followed, never guided. */
+    @Override
+    public boolean walksAhead(generated.hospital.domain.Person p) {
+        return HospitalFloor.WALKING_AHEAD.contains(p.name());
+    }
+
     /**
      * The person walks the model edge's route ahead of the robot, which follows within
      * [{@value #FOLLOW_MIN}, {@value #FOLLOW_MAX}] m; done when the person stands at dst with the robot behind.

@@ -169,6 +169,12 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
         return 100 * b.joulesPerMetre() / b.capacityJoules();
     }
 
+    /** The charge a plan keeps in hand, percent ({@link HospitalObjects#RESERVE_PERCENT}). */
+    @Override
+    public double reserve() {
+        return HospitalObjects.RESERVE_PERCENT;
+    }
+
     /** The most it may carry, kg ({@link HospitalObjects#PAYLOAD_KG}). */
     @Override
     public int payload() {

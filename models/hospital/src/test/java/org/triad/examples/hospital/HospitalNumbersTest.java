@@ -66,6 +66,34 @@ class HospitalNumbersTest {
         assertEquals(courier.drain() * (3.7 + 8.0), drawn, 0.5, "the battery drawn over 11.7 m");
     }
 
+    /**
+     * The situations' reserve ({@code Courier.reserve()}) is what the bindings report, and it covers what a simulated
+     * courier drives beyond the models' metres: on a round of the floor's corridors, the battery drawn beyond the
+     * models' figure, scaled to a whole battery's trip (what a plan from 100 % may drive), stays under the reserve.
+     */
+    @Test
+    void theReserveCoversWhatTheCourierDrivesBeyondTheModelsMetres() throws IOException {
+        for (String situation : List.of("Morning.state", "Evening.state", "Shortage.state")) {
+            assertTrue(Files.readString(MODELS.resolve(situation)).contains("Courier.reserve() == " + HospitalObjects.RESERVE_PERCENT + ";"),
+                    situation + " states the courier's reserve, " + HospitalObjects.RESERVE_PERCENT + " %");
+        }
+        HospitalSimulation h = new HospitalSimulation(1);
+        HospitalObjects o = h.objects();
+        SimulatedCourier courier = h.courier();
+        assertEquals(HospitalObjects.RESERVE_PERCENT, courier.reserve(), 1e-12);
+        // lobby, c4, c5, c6, c3, c2, c1, c4, lobby: the corridors' lengths in the situations
+        List<String> round = List.of("lobby", "c4", "c5", "c6", "c3", "c2", "c1", "c4", "lobby");
+        double metres = 3.7 + 8.0 + 8.0 + 13.6 + 8.0 + 8.0 + 13.6 + 3.7;
+        for (int i = 1; i < round.size(); i++) {
+            assertTrue(courier.move(o.waypoint(round.get(i - 1)), o.waypoint(round.get(i))), "to " + round.get(i));
+        }
+        double drawn = 100.0 - courier.battery();
+        double beyond = drawn / (courier.drain() * metres) - 1;
+        System.out.printf(java.util.Locale.ROOT, "round of %.1f m: %.2f %% drawn, the models say %.2f %%: %.1f %% more%n", metres, drawn,
+                courier.drain() * metres, 100 * beyond);
+        assertTrue(beyond * 100 <= HospitalObjects.RESERVE_PERCENT, "the courier drove " + 100 * beyond + " % more than the models' metres");
+    }
+
     @Test
     void theCourierReadsItsBatteryAndTheRechargeTaskChargesItFullAtTheDock() {
         HospitalSimulation h = new HospitalSimulation(1);

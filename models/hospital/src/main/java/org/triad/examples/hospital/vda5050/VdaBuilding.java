@@ -94,6 +94,12 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
         return knowledge.itemAt(i.name()).map(w.name()::equals).orElse(false);
     }
 
+    /** Whether the person walks their own way ({@link HospitalFloor#WALKING_AHEAD}): then followed, never guided. */
+    @Override
+    public boolean walksAhead(Person p) {
+        return HospitalFloor.WALKING_AHEAD.contains(p.name());
+    }
+
     @Override
     public WayPoint personAt(Person p) {
         return objects.waypoint(knowledge.personAt(p.name()));

@@ -106,6 +106,12 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return HospitalObjects.DRAIN_PERCENT_PER_METRE;
     }
 
+    /** The charge a plan keeps in hand, percent ({@link HospitalObjects#RESERVE_PERCENT}): the AGV too drives more than the model's metres. */
+    @Override
+    public double reserve() {
+        return HospitalObjects.RESERVE_PERCENT;
+    }
+
     /** The factsheet's {@code maxLoadMass}, kg. */
     @Override
     public int payload() {
