@@ -96,7 +96,7 @@ class FloorPlanTest {
         Rect b = plan.bounds();
         int clear = 0;
         int free = 0;
-        for (int i = 0; i < 20_000; i++) {
+        for (int i = 0; i < 4_000; i++) {
             Vec2 p = point(plan, random, b);
             Vec2 q = random.nextInt(4) == 0 ? p.plus(new Vec2(random.nextDouble(-1, 1), random.nextDouble(-1, 1))) : point(plan, random, b);
             double clearance = random.nextInt(5) == 0 ? 0 : random.nextDouble(0, 1.5);
@@ -106,7 +106,7 @@ class FloorPlanTest {
             clear += byEveryWall ? 1 : 0;
             free += plan.clearOfWalls(p, clearance) ? 1 : 0;
         }
-        assertTrue(clear > 1000 && clear < 19_000 && free > 1000 && free < 19_000, "both answers are tested often: " + clear + ", " + free);
+        assertTrue(clear > 200 && clear < 3_800 && free > 200 && free < 3_800, "both answers are tested often: " + clear + ", " + free);
     }
 
     /** A point of the plan's bounds (a little beyond them too), a fifth of them on a wall's end or middle. */
