@@ -18,7 +18,8 @@ import org.triad.runtime.component.ComponentFault;
  * A planning failure that follows a failed action in the same row names that action's failure first
  * (cause): the planner's "no plan" from where a stuck lift left the robot is the consequence, the
  * lift's fault the reason, on the re-plan and on the abort. The abort carries the kind of that cause
- * (run.failureCause(): the building's congestion, or a fault), so a fleet can queue the task again.
+ * (run.abortCause(refused): a proven refusal, the building's congestion, or a fault), so a fleet can
+ * queue the task again after congestion and not hold a refusal against the robot.
  * Tasks that arrive meanwhile queue. Every step is reported on status.
  *
  * At most one request (plan or action) is outstanding; run (a TaskProgress) numbers requests, so a
@@ -120,7 +121,7 @@ component Controller {
       planRequest = run.planRequest();
     };
     Failed -> TaskDone [refused || failures >= maxReplans] / {
-      status = new Status.TaskAborted(run.task(), run.goal(), reason, run.failureCause());
+      status = new Status.TaskAborted(run.task(), run.goal(), reason, run.abortCause(refused));
       status = new Status.RemoteOperationRequested(run.task(), run.goal(), reason);
     };
 

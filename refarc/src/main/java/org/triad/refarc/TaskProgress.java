@@ -64,6 +64,11 @@ public final class TaskProgress {
         return failureCause;
     }
 
+    /** The kind of an abort now: {@link Failure.Cause#REFUSED} for a proven refusal, else the last failure's ({@link #failureCause}). */
+    public Failure.Cause abortCause(boolean refused) {
+        return refused ? Failure.Cause.REFUSED : failureCause;
+    }
+
     public GoalInstance goal() {
         return task.goals().get(goalIndex);
     }

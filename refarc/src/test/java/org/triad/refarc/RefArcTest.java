@@ -134,6 +134,7 @@ class RefArcTest {
         Status.RemoteOperationRequested request = (Status.RemoteOperationRequested) r.statuses().get(5);
         assertEquals("GoTo(b, c)", request.task().describe());
         assertEquals("IsAt(b)", request.goal().describe());
+        assertEquals(org.triad.runtime.app.Failure.Cause.FAULT, abortCause(r), "failures the planner did not prove are a fault");
     }
 
     /** Issue #22: a refusal the planner proved (a battery too low for the trip) is not planned again from the same state. */
@@ -149,6 +150,12 @@ class RefArcTest {
         assertEquals(RefArcRun.Outcome.ABORTED, r.outcome());
         assertEquals(1, planner.calls(), "planned once: the answer cannot change from an unchanged state");
         assertEquals(List.of(), world.executed());
+        assertEquals(org.triad.runtime.app.Failure.Cause.REFUSED, abortCause(r), "a proven refusal is not a fault");
+    }
+
+    private static org.triad.runtime.app.Failure.Cause abortCause(RefArcRun r) {
+        return r.statuses().stream().filter(Status.TaskAborted.class::isInstance).map(Status.TaskAborted.class::cast)
+                .findFirst().orElseThrow().cause();
     }
 
     /**
@@ -175,6 +182,7 @@ class RefArcTest {
                 "task GoTo(b, c) aborted at goal IsAt(c): planning failed: battery is 5.0 and the trip needs 29.0",
                 "remote operation requested for task GoTo(b, c) at goal IsAt(c): planning failed: battery is 5.0 and the trip needs 29.0"), r.log());
         assertEquals(4, planner.calls());
+        assertEquals(org.triad.runtime.app.Failure.Cause.REFUSED, abortCause(r), "the new goal's refusal is proven and nothing failed since");
     }
 
     @Test

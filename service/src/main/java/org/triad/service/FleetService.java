@@ -62,6 +62,13 @@ public final class FleetService implements AutoCloseable {
      * of dispatch (service/BENCHMARK.md, the mixed benchmark under traffic control).
      */
     public static final int CONGESTION_REQUEUES = 3;
+    /**
+     * How the reason of a task that the planner proved impossible from the observed state ({@link Failure.Cause#REFUSED}: a
+     * battery too low for the trip, an item nowhere) begins. The task ends aborted, so that the operator can retry it once the
+     * state has changed (the robot charged, the item brought), mark it done or cancel it; the robot is not held to account
+     * for it ({@link #ABORTS_IN_A_ROW}).
+     */
+    public static final String REFUSED = "refused: ";
     /** How long a task queued again after congestion waits before its next run, times the how-manieth time it is (the others move on meanwhile). */
     private volatile java.time.Duration congestionPause = java.time.Duration.ofSeconds(10);
     /** Tasks queued again after congestion, with when they may run again. */
@@ -994,7 +1001,7 @@ public final class FleetService implements AutoCloseable {
                             : a.cause() == Failure.Cause.CONGESTION && dispatching
                                     ? a.reason() + "; the building's congestion ended this task " + (CONGESTION_REQUEUES + 1)
                                             + " times (queued again " + CONGESTION_REQUEUES + " times): the jam does not clear by itself"
-                                    : a.reason();
+                                    : a.cause() == Failure.Cause.REFUSED ? REFUSED + a.reason() : a.reason();
                     String[] request = { "remote_operation", "remote operation requested: " + cause };
                     durably(() -> store.finishTask(taskId, lane.name(), List.of(event, request), TaskState.ABORTED, lane.name(), cause,
                             new String[] { a.goal().describe(), cause }, now));
@@ -1055,8 +1062,8 @@ public final class FleetService implements AutoCloseable {
      * why it was taken out, or null; call with the lock held.
      */
     private String takeOutIfFailing(RobotLane lane, long taskId, Status.TaskAborted abort) {
-        if (abort.cause() == Failure.Cause.CONGESTION) {
-            return null; // neither the robot's fault nor its success: the count stays where it was
+        if (abort.cause() == Failure.Cause.CONGESTION || abort.cause() == Failure.Cause.REFUSED) {
+            return null; // the building's jam, or the models' proof that the task cannot be done from here: not the robot's fault
         }
         int inARow = lane.aborted();
         if (inARow >= ABORTS_IN_A_ROW && lane.online()) {

@@ -13,6 +13,7 @@ import org.triad.refarc.RefArc;
 import org.triad.refarc.StateSource;
 import org.triad.refarc.Status;
 import org.triad.refarc.fleet.FleetRobot;
+import org.triad.runtime.app.GoalInstance;
 import org.triad.runtime.app.GroundAction;
 import org.triad.runtime.app.State;
 import org.triad.runtime.app.TaskInstance;
@@ -209,10 +210,20 @@ final class RobotLane implements AutoCloseable {
         }
     }
 
+    /** Both of the planner's methods, so that the lookahead of {@code plan(goal, then, from)} reaches it. */
     private GoalPlanner guard(GoalPlanner planner) {
-        return (goal, from) -> {
-            String stop = stopReason;
-            return stop != null ? PlanningOutcome.failed(stop) : planner.plan(goal, from);
+        return new GoalPlanner() {
+            @Override
+            public PlanningOutcome plan(GoalInstance goal, State from) throws Exception {
+                String stop = stopReason;
+                return stop != null ? PlanningOutcome.failed(stop) : planner.plan(goal, from);
+            }
+
+            @Override
+            public PlanningOutcome plan(GoalInstance goal, List<GoalInstance> then, State from) throws Exception {
+                String stop = stopReason;
+                return stop != null ? PlanningOutcome.failed(stop) : planner.plan(goal, then, from);
+            }
         };
     }
 

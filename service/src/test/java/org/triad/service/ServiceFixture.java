@@ -31,7 +31,11 @@ final class ServiceFixture implements AutoCloseable {
     }
 
     static ServiceFixture start(Path db, String... robots) {
-        return new ServiceFixture(TriadService.start(options(db, robots)));
+        return start(options(db, robots));
+    }
+
+    static ServiceFixture start(TriadService.Options options) {
+        return new ServiceFixture(TriadService.start(options));
     }
 
     static TriadService.Options options(Path db, String... robots) {

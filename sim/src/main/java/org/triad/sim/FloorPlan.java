@@ -34,6 +34,7 @@ public final class FloorPlan {
     private final List<ItemPlacement> items;
     private final double wallThickness;
     private final Rect bounds;
+    private final WallGrid wallGrid;
 
     private FloorPlan(List<Room> rooms, List<Wall> walls, List<Doorway> doorways, Map<String, Waypoint> waypoints,
                       List<GraphEdge> edges, List<ItemPlacement> items, double wallThickness) {
@@ -60,6 +61,7 @@ public final class FloorPlan {
             maxY = Math.max(maxY, r.bounds().maxY());
         }
         this.bounds = new Rect(minX, minY, maxX, maxY);
+        this.wallGrid = new WallGrid(this.walls, bounds);
     }
 
     /** Starts an empty floor plan. */
@@ -192,12 +194,12 @@ public final class FloorPlan {
         if (roomAt(a).isEmpty() || roomAt(b).isEmpty() || roomAt(a.plus(b).times(0.5)).isEmpty()) {
             return false;
         }
-        for (Wall w : walls) {
-            if (Segments.segmentDistance(a, b, w.a(), w.b()) < clearance + wallThickness / 2) {
-                return false;
-            }
-        }
-        return true;
+        return !wallGrid.anyNearSegment(a, b, clearance + wallThickness / 2);
+    }
+
+    /** Whether {@code p} is at least {@code clearance} from every wall surface: {@code wallClearance(p) >= clearance}, without visiting every wall. */
+    public boolean clearOfWalls(Vec2 p, double clearance) {
+        return !wallGrid.anyNearPoint(p, clearance, wallThickness / 2);
     }
 
     /** The first doorway (declaration order) that the segment {@code a}-{@code b} passes through. */

@@ -706,7 +706,7 @@ public final class Simulation {
     }
 
     boolean isFree(Vec2 p, double radius) {
-        if (plan.roomAt(p).isEmpty() || plan.wallClearance(p) < radius) {
+        if (plan.roomAt(p).isEmpty() || !plan.clearOfWalls(p, radius)) {
             return false;
         }
         for (Door d : doors.values()) {

@@ -86,4 +86,35 @@ class FloorPlanTest {
         assertEquals(3, plan.items().size());
         plan.items().forEach(i -> assertEquals("storage", plan.roomAt(i.position()).orElseThrow().name()));
     }
+
+    /** The wall grid answers as testing every wall does: segments and points all over a plan, some on walls and corners. */
+    @Test
+    void theWallGridAnswersAsEveryWallDoes() {
+        FloorPlan plan = FloorPlans.corridorWithRooms(java.util.List.of("s1", "s2", "s3", "s4", "s5", "s6"),
+                java.util.List.of("n1", "n2", "n3", "n4", "n5"), 6, 5, 2.4);
+        java.util.SplittableRandom random = new java.util.SplittableRandom(7);
+        Rect b = plan.bounds();
+        int clear = 0;
+        int free = 0;
+        for (int i = 0; i < 4_000; i++) {
+            Vec2 p = point(plan, random, b);
+            Vec2 q = random.nextInt(4) == 0 ? p.plus(new Vec2(random.nextDouble(-1, 1), random.nextDouble(-1, 1))) : point(plan, random, b);
+            double clearance = random.nextInt(5) == 0 ? 0 : random.nextDouble(0, 1.5);
+            boolean byEveryWall = EveryWall.isClear(plan, p, q, clearance);
+            assertEquals(byEveryWall, plan.isClear(p, q, clearance), p + " -> " + q + " at " + clearance);
+            assertEquals(EveryWall.clearOfWalls(plan, p, clearance), plan.clearOfWalls(p, clearance), p + " at " + clearance);
+            clear += byEveryWall ? 1 : 0;
+            free += plan.clearOfWalls(p, clearance) ? 1 : 0;
+        }
+        assertTrue(clear > 200 && clear < 3_800 && free > 200 && free < 3_800, "both answers are tested often: " + clear + ", " + free);
+    }
+
+    /** A point of the plan's bounds (a little beyond them too), a fifth of them on a wall's end or middle. */
+    private static Vec2 point(FloorPlan plan, java.util.SplittableRandom random, Rect b) {
+        if (random.nextInt(5) == 0) {
+            Wall w = plan.walls().get(random.nextInt(plan.walls().size()));
+            return random.nextBoolean() ? w.a() : w.a().plus(w.b()).times(0.5);
+        }
+        return new Vec2(random.nextDouble(b.minX() - 1, b.maxX() + 1), random.nextDouble(b.minY() - 1, b.maxY() + 1));
+    }
 }

@@ -16,7 +16,14 @@ public record Failure(String reason, Cause cause) {
 		 * drive refused to avoid a deadlock, a robot that made way for another). Not the robot's fault, and the same
 		 * task may well succeed once the others have moved on.
 		 */
-		CONGESTION
+		CONGESTION,
+		/**
+		 * A refusal the planner proved: from the state the robot and the building reported, no plan reaches the goal
+		 * (a battery too low for the trip, an item nowhere to be found). Not the robot's fault: any robot in that state
+		 * gets the same answer, and nothing was tried; someone changes the state (charges the robot, brings the item) or
+		 * the task.
+		 */
+		REFUSED
 	}
 
 	public Failure {

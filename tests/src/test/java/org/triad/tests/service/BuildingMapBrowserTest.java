@@ -41,7 +41,7 @@ class BuildingMapBrowserTest {
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
                 SimulatedAgv c1 = new SimulatedAgv(broker.url(), "courier-1", 42, 5, null, line -> { }).start();
                 SimulatedAgv c2 = new SimulatedAgv(broker.url(), "courier-2", 43, 5, null, line -> { }).start();
-                TriadService s = TriadService.start(new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1"), null,
+                TriadService s = TriadService.start(new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1,silence=30"), null,
                         dir.resolve("db"), null, "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "building-map-submit", AccessTokens.OPERATOR_ENV, OPERATOR)))) {
             browser = HeadlessChromium.start(dir.resolve("chromium-profile"));
             check(s, browser);

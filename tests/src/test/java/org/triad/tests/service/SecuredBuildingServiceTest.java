@@ -62,7 +62,7 @@ class SecuredBuildingServiceTest {
             awaitLine(buildingLog, "building: one hospital", building);
             System.setProperty(ClientCredentials.PROPERTY, credentials.dir().toString()); // the service is master control
             // under traffic control (the default): the ride is a reserved edge of the traffic map, c7 -> d1
-            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=10"), null, dir.resolve("db"),
+            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=10,silence=30"), null, dir.resolve("db"),
                     null, "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "secured-submit-token", AccessTokens.OPERATOR_ENV, OPERATOR));
             try (TriadService s = TriadService.start(o)) {
                 assertEquals(List.of("courier-1"), s.fleet().robots().stream().map(r -> r.name()).toList());

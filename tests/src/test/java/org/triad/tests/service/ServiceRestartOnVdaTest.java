@@ -52,7 +52,7 @@ class ServiceRestartOnVdaTest {
 
             int port = MosquittoBroker.freePort();
             Process first = start(started, dir.resolve("serve-1.log"), TriadCli.class.getName(), "serve", HOSPITAL.toString(), "--robots",
-                    "vda5050:" + broker.url() + ",wait=60", "--port", Integer.toString(port), "--db", dir.resolve("db").toString());
+                    "vda5050:" + broker.url() + ",wait=60,silence=30", "--port", Integer.toString(port), "--db", dir.resolve("db").toString());
             ApiClient api = new ApiClient("http://127.0.0.1:" + port, TOKEN);
             awaitRobots(api, first, dir.resolve("serve-1.log"));
             long id = JSON.readTree(api.post("/api/tasks", "{\"task\":\"GoTo\",\"args\":{\"dst\":\"ward3\"}}")).path("id").asLong();
@@ -61,7 +61,7 @@ class ServiceRestartOnVdaTest {
 
             int port2 = MosquittoBroker.freePort();
             Process second = start(started, dir.resolve("serve-2.log"), TriadCli.class.getName(), "serve", HOSPITAL.toString(), "--robots",
-                    "vda5050:" + broker.url() + ",wait=60", "--port", Integer.toString(port2), "--db", dir.resolve("db").toString());
+                    "vda5050:" + broker.url() + ",wait=60,silence=30", "--port", Integer.toString(port2), "--db", dir.resolve("db").toString());
             ApiClient again = new ApiClient("http://127.0.0.1:" + port2, TOKEN);
             awaitRobots(again, second, dir.resolve("serve-2.log"));
             JsonNode done = awaitTask(again, id, t -> Set.of("completed", "aborted").contains(t.path("state").asText()));

@@ -54,7 +54,7 @@ class ServiceTrafficOnVdaTest {
                     System.getProperty("java.class.path"), HospitalAgvMain.class.getName(), "--broker", broker.url(), "--count", "2", "--speed", "4"));
             building = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(buildingLog.toFile()).start();
             awaitLine(buildingLog, "building: one hospital", building);
-            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1"), null, dir.resolve("db"), null,
+            TriadService.Options o = new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1,silence=30"), null, dir.resolve("db"), null,
                     "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "traffic-submit-token", AccessTokens.OPERATOR_ENV, OPERATOR));
             // the doors as the building reports them (retained states, then every change)
             Map<String, List<String>> doorModes = new java.util.concurrent.ConcurrentHashMap<>();

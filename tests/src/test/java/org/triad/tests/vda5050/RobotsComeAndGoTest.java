@@ -50,7 +50,7 @@ class RobotsComeAndGoTest {
 	void agvsThatComeLaterAreDispatchedToThoseThatGoAreTakenOutAndBadOnesAreRefusedWithTheReason() throws Exception {
 		try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
 				SimulatedAgv c1 = new SimulatedAgv(broker.url(), "courier-1", 42, 50, null, line -> { }).start();
-				TriadService s = TriadService.start(new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1,allow=courier-*"),
+				TriadService s = TriadService.start(new TriadService.Options(HOSPITAL, List.of("vda5050:" + broker.url() + ",wait=1,allow=courier-*,silence=30"),
 						null, dir.resolve("db"), null, "127.0.0.1", 0,
 						Map.of(AccessTokens.SUBMIT_ENV, "submit-token-for-tests", AccessTokens.OPERATOR_ENV, "operator-token-for-tests")))) {
 			assertEquals(List.of("courier-1"), s.fleet().robots().stream().map(RobotView::name).toList());

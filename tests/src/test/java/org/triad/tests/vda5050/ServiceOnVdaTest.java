@@ -59,7 +59,7 @@ class ServiceOnVdaTest {
 		try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
 				SimulatedAgv c1 = new SimulatedAgv(broker.url(), "courier-1", 42, 50, null, line -> { }).start();
 				SimulatedAgv c2 = new SimulatedAgv(broker.url(), "courier-2", 42, 50, null, line -> { }).start();
-				TriadService s = TriadService.start(options("vda5050:" + broker.url() + ",wait=1"))) {
+				TriadService s = TriadService.start(options("vda5050:" + broker.url() + ",wait=1,silence=30"))) {
 			assertEquals(List.of("courier-1", "courier-2"), s.fleet().robots().stream().map(r -> r.name()).sorted().toList());
 			long toWard1 = submit(s, "GoTo", JSON.createObjectNode().put("dst", "ward1"));
 			long toWard3 = submit(s, "GoTo", JSON.createObjectNode().put("dst", "ward3"));

@@ -68,7 +68,7 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "vda5050:tcp://HOST:PORT[,wait=S][,allow=SERIAL+SERIAL*][,traffic=S|off]  the hospital couriers ONLINE on that VDA 5050 broker, and those that come later, driven under traffic control";
+        return "vda5050:tcp://HOST:PORT[,wait=S][,allow=SERIAL+SERIAL*][,traffic=S|off][,silence=S]  the hospital couriers ONLINE on that VDA 5050 broker, and those that come later, driven under traffic control";
     }
 
     @Override
@@ -78,8 +78,13 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         double wait = DEFAULT_WAIT_SECONDS;
         double trafficBound = TRAFFIC_WAIT_SECONDS;
         List<String> allowed = List.of();
+        VdaTimeouts timeouts = VdaTimeouts.defaults();
         for (int i = 1; i < parts.length; i++) {
             String[] kv = parts[i].split("=", 2);
+            if (kv.length == 2 && kv[0].trim().equals("silence")) {
+                timeouts = withSilence(timeouts, kv[1].trim());
+                continue;
+            }
             if (kv.length == 2 && kv[0].trim().equals("traffic")) {
                 trafficBound = trafficBound(kv[1].trim());
                 continue;
@@ -103,7 +108,6 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
                 throw new IllegalArgumentException("vda5050:...,wait=S takes 0 to 600 seconds, not " + kv[1]);
             }
         }
-        VdaTimeouts timeouts = VdaTimeouts.defaults();
         MasterControl master = MasterControl.connect(broker, timeouts, line -> System.err.println("triad serve: " + line));
         TrafficControl traffic = trafficBound == 0 ? null
                 : new TrafficControl(HospitalTraffic.map(new HospitalFloor()), trafficBound, line -> System.err.println("triad serve: " + line));
@@ -190,6 +194,23 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
     static final double TRAFFIC_WAIT_SECONDS = 120;
     /** A move's typical time (one model edge at the couriers' speed): the unit congestion costs count expected waits in. */
     static final double SECONDS_PER_MOVE = 10;
+
+    /**
+     * {@code silence=S}: how long an order may go without a state message from its AGV before it fails (default
+     * {@code VdaTimeouts.defaults()}'s 5 s; an AGV sends one at least every second). A loaded machine or network wants more.
+     */
+    private static VdaTimeouts withSilence(VdaTimeouts t, String value) {
+        double s;
+        try {
+            s = Double.parseDouble(value);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("vda5050:...,silence=S takes seconds, not '" + value + "'");
+        }
+        if (!(s > 0) || s > 600) {
+            throw new IllegalArgumentException("vda5050:...,silence=S takes 0 to 600 seconds, not " + value);
+        }
+        return new VdaTimeouts(t.onlineSeconds(), s, t.actionSeconds(), t.reconnectGraceSeconds());
+    }
 
     private static double trafficBound(String value) {
         if (value.equals("off")) {
