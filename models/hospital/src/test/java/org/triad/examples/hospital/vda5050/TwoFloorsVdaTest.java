@@ -35,7 +35,7 @@ class TwoFloorsVdaTest {
     void aDeliveryFromThePharmacyToAWardUpstairsPassesTheDoorAndRidesTheLift() throws Exception {
         Path dir = Path.of("target", "vda5050", "twoFloors");
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 1, 20, dir);
+                AgvProcess building = AgvProcess.building(broker.url(), 1, 40, dir);
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, line -> { });
                 VdaHospital h = new VdaHospital(master, "courier-1", 60, 120)) {
             assertTrue(h.courier().agv().awaitOnline(), building.output());
@@ -61,14 +61,14 @@ class TwoFloorsVdaTest {
     void aDoorAndThenALiftThatDoNotAnswerEachEndTheTaskWithTheReasonNotAHang() throws Exception {
         Path dir = Path.of("target", "vda5050", "silentDevices");
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 1, 20, dir, "--devices", "off");
+                AgvProcess building = AgvProcess.building(broker.url(), 1, 40, dir, "--devices", "off");
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, line -> { });
-                VdaHospital h = new VdaHospital(master, "courier-1", 2, 2)) {
+                VdaHospital h = new VdaHospital(master, "courier-1", 1, 1)) {
             assertTrue(h.courier().agv().awaitOnline(), building.output());
             RefArcRun run = h.run(new GoTo(h.objects().room("pharmacy")), statuses::add);
             assertEquals(RefArcRun.Outcome.ABORTED, run.outcome(), run.log().toString());
             String failed = failed();
-            assertTrue(failed.contains("door 'pharmacyDoor' did not answer the request OPEN within 2.0 s (it never reported a state: is the device online?)"),
+            assertTrue(failed.contains("door 'pharmacyDoor' did not answer the request OPEN within 1.0 s (it never reported a state: is the device online?)"),
                     failed);
             assertTrue(last(Status.TaskAborted.class).contains("pharmacyDoor"), last(Status.TaskAborted.class));
             assertEquals("c0", h.courier().agv().state().orElseThrow().lastNodeId(), "the courier waits before the door");
@@ -78,7 +78,7 @@ class TwoFloorsVdaTest {
             assertEquals(RefArcRun.Outcome.ABORTED, run.outcome(), run.log().toString());
             failed = failed();
             assertTrue(failed.matches("(?s)action Building\\.ride\\(lift, c7, d1\\) failed: [^\n]*lift 'lift' did not answer the request for floor 0"
-                    + " within 2\\.0 s \\(it never reported a state: is the device online\\?\\).*"), failed);
+                    + " within 1\\.0 s \\(it never reported a state: is the device online\\?\\).*"), failed);
             String aborted = last(Status.TaskAborted.class);
             assertTrue(aborted.startsWith("task GoTo(ward5) aborted at goal IsAt(ward5): action Building.ride(lift, c7, d1) failed: ")
                     && aborted.contains("lift 'lift' did not answer"), aborted);
@@ -90,7 +90,7 @@ class TwoFloorsVdaTest {
     void aLiftThatStopsBetweenFloorsEndsTheTaskWithTheReasonOnStatus() throws Exception {
         Path dir = Path.of("target", "vda5050", "brokenLift");
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 1, 20, dir, "--break-lift-at", "0");
+                AgvProcess building = AgvProcess.building(broker.url(), 1, 40, dir, "--break-lift-at", "0");
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, line -> { });
                 VdaHospital h = new VdaHospital(master, "courier-1", 60, 120)) {
             assertTrue(h.courier().agv().awaitOnline(), building.output());
@@ -121,7 +121,7 @@ class TwoFloorsVdaTest {
     void theSimulatedAgvPassesADoorAndRidesTheLiftAsEdgeActions() throws Exception {
         Path dir = Path.of("target", "vda5050", "edgeActions");
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 1, 20, dir);
+                AgvProcess building = AgvProcess.building(broker.url(), 1, 40, dir);
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, line -> { })) {
             RemoteAgv agv = master.agv("courier-1");
             assertTrue(agv.awaitOnline(), building.output());
@@ -149,7 +149,7 @@ class TwoFloorsVdaTest {
     void twoRobotsQueuedAtTheLiftAreEachServedInTurn() throws Exception {
         Path dir = Path.of("target", "vda5050", "liftQueue");
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), 1, 20, dir);
+                AgvProcess building = AgvProcess.building(broker.url(), 1, 40, dir);
                 MasterControl master = MasterControl.connect(broker.url(), VdaFaultsTest.TEST_TIMEOUTS, line -> { });
                 DeviceLink one = DeviceLink.over(master.link(), line -> { });
                 DeviceLink two = DeviceLink.over(master.link(), line -> { })) {
