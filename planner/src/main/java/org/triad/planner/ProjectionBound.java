@@ -504,7 +504,7 @@ final class ProjectionBound {
         private double[] viaRefill;
         /** Per pair, the charge the way {@link #toGoal} found spends. */
         private double[] cheapestDrain;
-        /** The charge as a third dimension, made the first time a state's charge is below its cheapest way's. */
+        /** The charge as a third dimension (on the merged projection), made when {@link #cheapest} first uses it. */
         private ChargedProjection charged;
 
         /** Per pair where a refill applies (its group conditions hold there): its cost plus the way on from where it leaves. */
