@@ -30,6 +30,9 @@ final class ProjectionBound {
     private static final int MAX_LEVELS = 256;
     private static final int MIN_LEVELS = 16;
     private static final long MAX_CHARGED_NODES = 2_000_000;
+    /** Nodes up to which a charged projection is made at once; above, after this many lookups that could use it. */
+    private static final long EAGER_CHARGED_NODES = 20_000;
+    private static final int CHARGED_AFTER_LOOKUPS = 500;
     /** Pairs up to which every value of the goal's group is kept apart (above, most are merged). */
     private static final long MAX_EXACT_PAIRS = 100_000;
 
@@ -472,9 +475,16 @@ final class ProjectionBound {
             double h = charge < leastDrain[p] - 1e-9 ? Math.max(toGoal[p], viaRefill[p]) : toGoal[p];
             // the charge's dimension on the merged values (an item's place at N waypoints times N robot places
             // times the charge levels would be too many nodes to search per goal; merged, about 4 N)
+            // a large table (and the merged projection it needs) waits until the search has met many such
+            // states: a goal that the bound above already solves in a few (the hospital's evening delivery,
+            // 15) paid twice its per-goal CPU for it
+            if ((long) (start.length - 1) * MAX_LEVELS > EAGER_CHARGED_NODES && ++lowCharges <= CHARGED_AFTER_LOOKUPS) return h;
             if (coarse == null) coarse = merged ? this : new Projection(goal, ownFacts, otherGroup, nf, true);
             return Math.max(h, coarse.withCharge(facts, charge, own));
         }
+
+        /** Lookups of a state whose charge is below its cheapest way's (a count, so the same on every run). */
+        private int lowCharges;
 
         /** The cheapest way from the state's pair with this charge in the charge's dimension; 0 where it does not apply. */
         private double withCharge(BitSet facts, double charge, double[] own) {
@@ -494,7 +504,7 @@ final class ProjectionBound {
         private double[] viaRefill;
         /** Per pair, the charge the way {@link #toGoal} found spends. */
         private double[] cheapestDrain;
-        /** The charge as a third dimension, made the first time a state's charge is below its cheapest way's. */
+        /** The charge as a third dimension (on the merged projection), made when {@link #cheapest} first uses it. */
         private ChargedProjection charged;
 
         /** Per pair where a refill applies (its group conditions hold there): its cost plus the way on from where it leaves. */
