@@ -159,21 +159,8 @@ public final class TrafficControl {
             return Optional.empty();
         }
         String at = table.decisionPoint(robot);
-        for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
-            if (!table.map().isStop(n) || table.map().node(n).capacity() > 1) {
-                continue; // a hall for several (the lobby) has one waypoint, which all robots stepping aside into it would drive to
-            }
-            boolean free = true;
-            java.util.Set<Resource> held = table.holding(robot);
-            for (Resource r : table.map().step(at, n)) {
-                if (held.contains(r)) {
-                    continue; // a zone it stands in already
-                }
-                java.util.Set<String> others = new java.util.HashSet<>(table.needing(r));
-                others.remove(robot);
-                free &= r.kind() != Resource.Kind.LIFT && others.size() + 1 <= r.capacity();
-            }
-            if (free) {
+        for (String n : placesForOneNextTo(at)) {
+            if (newOnStep(robot, at, n).stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && othersNeeding(r, robot) + 1 <= r.capacity())) {
                 return Optional.of(n);
             }
         }
@@ -183,9 +170,10 @@ public final class TrafficControl {
     /**
      * Where a robot that has to get out of the others' way goes: a free neighbour ({@link #aside}) if there is one,
      * else the neighbouring stop node for one that the fewest others hold or wait for (never the lift, a taken dead end,
-     * a place a lost robot blocks, nor one held by a robot that waits for this one). It may have to wait for that one (an ordinary request: queued only without a
-     * cycle); before, a robot with no free neighbour stayed where it was, and a robot at the door of a dead end kept the
-     * one inside shut in for good (the service's benchmark: courier-4 at {@code c1}, courier-3 in the storage room).
+     * a place a lost robot blocks, nor one held by a robot that waits for this one). It may have to wait for that one
+     * (an ordinary request: queued only without a cycle); before, a robot with no free neighbour stayed where it was, and
+     * a robot at the door of a dead end kept the one inside shut in for good (the service's benchmark: courier-4 at
+     * {@code c1}, courier-3 in the storage room).
      */
     synchronized Optional<String> wayOut(String robot) {
         Optional<String> free = aside(robot);
@@ -196,33 +184,43 @@ public final class TrafficControl {
         Map<String, java.util.Set<String>> waitsFor = table.waitsFor();
         String best = null;
         int fewest = Integer.MAX_VALUE;
-        for (String n : new java.util.TreeSet<>(table.map().neighbours(at))) {
-            if (!table.map().isStop(n) || table.map().node(n).capacity() > 1) {
-                continue;
-            }
+        for (String n : placesForOneNextTo(at)) {
             if (table.map().neighbours(n).equals(java.util.Set.of(at)) && !table.needing(table.map().node(n)).isEmpty()) {
                 continue; // a taken dead end off here: who is in it can only come out through where this robot stands
             }
-            int others = 0;
-            boolean usable = true;
-            java.util.Set<Resource> held = table.holding(robot);
-            for (Resource r : table.map().step(at, n)) {
-                if (held.contains(r)) {
-                    continue;
-                }
-                java.util.Set<String> needing = new java.util.HashSet<>(table.needing(r));
-                needing.remove(robot);
-                others += needing.size();
-                // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out
-                usable &= r.kind() != Resource.Kind.LIFT && table.holders(r).stream()
-                        .noneMatch(h -> table.isLost(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot));
-            }
+            List<Resource> step = newOnStep(robot, at, n);
+            // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out
+            boolean usable = step.stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && table.holders(r).stream()
+                    .noneMatch(h -> table.isLost(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot)));
+            int others = step.stream().mapToInt(r -> othersNeeding(r, robot)).sum();
             if (usable && others < fewest) {
                 best = n;
                 fewest = others;
             }
         }
         return Optional.ofNullable(best);
+    }
+
+    /**
+     * The stop nodes for one robot next to {@code at}, by name: a hall for several (the lobby) has one waypoint, which
+     * all robots getting out of the way into it would drive to.
+     */
+    private List<String> placesForOneNextTo(String at) {
+        return new java.util.TreeSet<>(table.map().neighbours(at)).stream()
+                .filter(n -> table.map().isStop(n) && table.map().node(n).capacity() <= 1).toList();
+    }
+
+    /** The resources of the step that the robot does not hold yet (a zone it stands in is no obstacle). */
+    private List<Resource> newOnStep(String robot, String at, String n) {
+        java.util.Set<Resource> held = table.holding(robot);
+        return table.map().step(at, n).stream().filter(r -> !held.contains(r)).toList();
+    }
+
+    /** How many robots other than this one hold or wait for the resource. */
+    private int othersNeeding(Resource r, String robot) {
+        java.util.Set<String> others = new java.util.HashSet<>(table.needing(r));
+        others.remove(robot);
+        return others.size();
     }
 
     public double waitBoundSeconds() {
@@ -308,6 +306,7 @@ public final class TrafficControl {
 
     synchronized Decision request(String robot, List<String> route) {
         mailbox.remove(robot);
+        displaced.remove(robot); // a refusal its last call did not pick up says nothing about this one
         requests++;
         Decision d = table.request(robot, route);
         for (Refused r : table.takeDisplaced()) { // robots waiting at the door of the dead end this one comes out of

@@ -252,6 +252,7 @@ public final class BuildingTrafficBenchmark {
                 simSeconds = Double.parseDouble(m.group(1));
             }
             int contacts = building.lines("contact courier-").size();
+            building.lines("contact courier-").stream().limit(10).forEach(l -> System.err.println("contact (" + n + " robots, reserved " + reserved + "): " + l));
             List<Double> doorWaits = new ArrayList<>();
             List<Double> liftWaits = new ArrayList<>();
             List<Double> laneWaits = new ArrayList<>();
