@@ -8,20 +8,24 @@ import java.util.Map;
 /**
  * Removes detours from a valid plan: cycles (a state visited twice) and then greedily every
  * action whose removal, together with the later actions that become inapplicable, still reaches
- * the goal (greedy action elimination). Where that fails, the removal is tried once more with
- * each later action that became inapplicable replaced by a {@linkplain Siblings sibling} that is
- * applicable: many domains name a fact's old value in an action's parameters (woodworking's
- * {@code do-plane ?x ?m ?oldsurface ?oldcolour ?oldtreatment}), so removing a needless step
- * (glazing a part that is planed again later) makes the later action's ground form inapplicable
- * although the same action with the true old value would do. The result is always a valid plan:
- * only applicable actions are applied, and the goal is checked.
+ * the goal (greedy action elimination). With {@code replace}, where that fails, the removal is tried
+ * once more with each later action that became inapplicable replaced by a {@linkplain Siblings
+ * sibling} that is applicable: many domains name a fact's old value in an action's parameters
+ * (woodworking's {@code do-plane ?x ?m ?oldsurface ?oldcolour ?oldtreatment}), so removing a
+ * needless step (glazing a part that is planed again later) makes the later action's ground form
+ * inapplicable although the same action with the true old value would do. The result is always a
+ * valid plan: only applicable actions are applied, and the goal is checked.
  */
 final class PlanShortener {
     private PlanShortener() { }
 
     static int[] shorten(SearchTask t, Successors s, int[] init, int[] goalPos, int[] goalNeg, int[] plan) {
+        return shorten(t, s, init, goalPos, goalNeg, plan, false);
+    }
+
+    static int[] shorten(SearchTask t, Successors s, int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean replace) {
         plan = removeCycles(s, init, plan);
-        Siblings siblings = new Siblings(t);
+        Siblings siblings = replace ? new Siblings(t) : null;
         boolean changed = true;
         while (changed) {
             changed = false;
@@ -29,9 +33,11 @@ final class PlanShortener {
             // goes), so a pass replays each suffix once instead of the whole plan per action
             int[] before = init;
             for (int i = 0; i < plan.length; i++) {
-                siblings.couldReplace = false;
+                if (siblings != null) siblings.couldReplace = false;
                 int[] candidate = eliminate(s, before, goalPos, goalNeg, plan, i, siblings, false);
-                if (candidate == null && siblings.couldReplace) candidate = eliminate(s, before, goalPos, goalNeg, plan, i, siblings, true);
+                if (candidate == null && siblings != null && siblings.couldReplace) {
+                    candidate = eliminate(s, before, goalPos, goalNeg, plan, i, siblings, true);
+                }
                 if (candidate != null) {
                     plan = candidate;
                     changed = true;
@@ -73,8 +79,9 @@ final class PlanShortener {
     /**
      * The plan without action {@code skip} (and the later ones it enables), or null; {@code before} is
      * the state before it. With {@code replace}, a later action that became inapplicable is replaced
-     * by its first applicable sibling, if any; without, it goes (and {@code siblings.couldReplace}
-     * tells whether one could have been replaced: only then is the second try worth its replay).
+     * by its first applicable sibling, if any; without, it goes (and {@code siblings.couldReplace},
+     * where {@code siblings} is given, tells whether one could have been replaced: only then is the
+     * second try worth its replay).
      */
     private static int[] eliminate(Successors s, int[] before, int[] goalPos, int[] goalNeg, int[] plan, int skip, Siblings siblings,
                                    boolean replace) {
@@ -84,8 +91,11 @@ final class PlanShortener {
         for (int i = skip + 1; i < plan.length; i++) {
             int o = plan[i];
             if (!s.isApplicable(state, o)) {
-                int sibling = siblings.applicable(s, state, o);
-                siblings.couldReplace |= sibling >= 0;
+                int sibling = -1;
+                if (siblings != null) {
+                    sibling = siblings.applicable(s, state, o);
+                    siblings.couldReplace |= sibling >= 0;
+                }
                 o = replace ? sibling : -1;
             }
             if (o >= 0) {

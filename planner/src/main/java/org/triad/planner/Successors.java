@@ -9,7 +9,11 @@ final class Successors {
     private int epoch;
     private int[] buf = new int[64];
     private int count;
-    /** Operators considered and facts written, over all calls: machine-independent effort ({@link WorkMeter}). */
+    /**
+     * Operators that would have been considered had their first precondition triggered the test (the
+     * count this meter has always had, so budgets and plans stay as they were) and facts written,
+     * over all calls: machine-independent effort ({@link WorkMeter}).
+     */
     private long work;
 
     Successors(SearchTask t) {
@@ -22,16 +26,17 @@ final class Successors {
         epoch++;
         for (int f : state) mark[f] = epoch;
         count = 0;
+        work += t.noPre.length;
         for (int o : t.noPre) consider(o);
         for (int f : state) {
-            for (int o : t.firstPreOf[f]) consider(o);
+            work += t.firstPreCount[f];
+            for (int o : t.triggeredBy[f]) consider(o);
         }
         Arrays.sort(buf, 0, count);
         return count;
     }
 
     private void consider(int o) {
-        work++;
         for (int p : t.pre[o]) if (mark[p] != epoch) return;
         for (int p : t.neg[o]) if (mark[p] == epoch) return;
         if (count == buf.length) buf = Arrays.copyOf(buf, count * 2);

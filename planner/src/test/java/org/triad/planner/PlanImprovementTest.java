@@ -107,7 +107,8 @@ class PlanImprovementTest {
                 """, "coats.pddl");
         Setup s = setup(paint, problem);
         int[] plan = s.ops("repaint p red blue", "repaint p blue green");
-        int[] shorter = PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan);
+        assertArrayEquals(plan, PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan));
+        int[] shorter = PlanShortener.shorten(s.task(), s.successors(), s.query().init(), s.query().goalPos(), s.query().goalNeg(), plan, true);
         assertArrayEquals(s.ops("repaint p red green"), shorter);
         List<PddlStep> steps = new ArrayList<>();
         for (int o : shorter) steps.add(s.task().ops[o].toAction());
