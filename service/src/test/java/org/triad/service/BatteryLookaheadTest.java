@@ -74,14 +74,16 @@ class BatteryLookaheadTest {
 
     @Test
     void aPatrolThatCannotBeCompletedIsRefusedBeforeTheCourierMovesAndNotHeldAgainstIt() throws IOException {
-        // ward1 -> xray is 15.4 m (7.7 %), back as much, and the dock is 37 m away: with 10 % the patrol cannot be done.
+        // ward1 -> xray is 15.4 m (7.7 %), back as much, every move keeps the 5 % reserve, and the dock is 37 m away: with
+        // 15 % the courier reaches xray (7.3 % left) but can neither come back nor reach the dock, so the patrol cannot be
+        // done, and the refusal is the lookahead's, at the second goal.
         // The courier's first 8 moves fail (two more tasks' worth of aborts, RefArc re-planning each 3 times): with the
         // refusal they would make 3 aborts in a row
-        try (ServiceFixture s = start(hospital("ward1", 10.0), "dry:1,state=Morning,fail=move*" + 2 * 4)) {
+        try (ServiceFixture s = start(hospital("ward1", 15.0), "dry:1,state=Morning,fail=move*" + 2 * 4)) {
             long id = s.submit("Patrol", "{\"a\": \"xray\", \"b\": \"ward1\", \"c\": \"xray\"}");
             JsonNode t = s.awaitState(id, "aborted");
             String reason = t.get("reason").asText();
-            assertTrue(reason.startsWith(FleetService.REFUSED + "planning failed: IsAt(ward1) unreachable: Courier.battery() is 2.3")
+            assertTrue(reason.startsWith(FleetService.REFUSED + "planning failed: IsAt(ward1) unreachable: Courier.battery() is 7.3")
                     && reason.contains("after IsAt(xray)"), reason);
             assertEquals(List.of(), events(t, "action_started"), "the courier did not move");
             JsonNode requests = s.get("/api/requests", ServiceFixture.OPERATOR).body();
