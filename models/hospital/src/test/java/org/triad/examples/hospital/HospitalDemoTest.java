@@ -29,6 +29,8 @@ class HospitalDemoTest {
 		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
 		assertTrue(lines.contains("gauze is now in ward1"), out::toString);
+		// the gauze's round leaves the courier below 60 %: it charges at the dock before the long trip upstairs
+		assertTrue(lines.stream().anyMatch(l -> l.contains("then Recharge(lobby): the battery is at")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("action Building.ride(lift, c7, d1) succeeded")), out::toString);
 		// the cabin carries the courier between floors: the battery pays only for driving in and out (the models' ride drains nothing)
 		double before = battery(lines, "Building.ride(lift, c7, d1) started");
