@@ -48,6 +48,8 @@ public final class ReservationTable {
     private final TrafficStats stats;
     /** Waiting requests refused to let another robot out of a dead end (see {@link #evictFromTheDoor}), not yet taken. */
     private final List<Refused> displaced = new ArrayList<>();
+    /** Robots whose last request was to guide a person (see {@link #request(String, List, boolean)}): they do not make way. */
+    private final Set<String> guides = new java.util.HashSet<>();
     private long arrivals;
     /** Arrival keys are this far apart, so that a request can be put between two queued ones (see {@link #overtaking}). */
     private static final long SPACING = 1L << 20;
@@ -163,6 +165,21 @@ public final class ReservationTable {
      * @throws IllegalStateException    for a robot not on the map, lost, or already waiting
      */
     public Decision request(String robot, List<String> route) {
+        return request(robot, route, false);
+    }
+
+    /**
+     * {@link #request(String, List)} for a robot that may be {@code guiding} a person along the route: such a robot does
+     * not make way (stepping aside would leave the person behind, and it came back to the same refusal: 24 of the
+     * service's 107 deadlock refusals were {@code guide(alice, c1, c4)}); when its request would close a cycle of waits,
+     * the robots of the cycle that wait and guide nobody are refused instead, to make way (rule 3's guide case).
+     */
+    public Decision request(String robot, List<String> route, boolean guiding) {
+        if (guiding) {
+            guides.add(robot);
+        } else {
+            guides.remove(robot);
+        }
         RobotState s = robot(robot);
         if (s.lost != null) {
             throw new IllegalStateException("robot " + robot + " is lost (" + s.lost + ") and asks for nothing");
@@ -218,6 +235,13 @@ public final class ReservationTable {
                 cycle = List.of();
             }
         }
+        // a guide does not make way: the others of the cycle do (the queue ahead tried first: nobody moves then)
+        while (!cycle.isEmpty() && guides.contains(robot) && evictForTheGuide(s, cycle)) {
+            if (fits(q)) {
+                return grant(s, q);
+            }
+            cycle = cycleThrough(q);
+        }
         if (!cycle.isEmpty()) {
             return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0), cycle);
         }
@@ -254,6 +278,35 @@ public final class ReservationTable {
             return true;
         }
         return false;
+    }
+
+    /**
+     * Rule 3's guide case: the robot guides a person and its request would close a cycle of waits. Every other robot of
+     * the cycle waits (a robot waits for another only if that one holds at its decision point or queued earlier, and in
+     * a cycle each one waits in turn); the first of them that guides nobody is refused instead (its wait withdrawn, a
+     * {@link Refused} naming both, collected for {@link #takeDisplaced}) and makes way. Only a wait is withdrawn, so no
+     * wait-for edge is added.
+     *
+     * @return whether a robot of the cycle was refused
+     */
+    private boolean evictForTheGuide(RobotState s, List<String> cycle) {
+        for (String h : cycle) {
+            RobotState b = robots.get(h);
+            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h)) {
+                continue;
+            }
+            String at = b.decisionPoint();
+            withdraw(b);
+            displaced.add(new Refused(h, "deadlock avoided: " + h + " at " + at + " and " + s.name + ", which guides a person, would wait for each other; "
+                    + h + " makes way", List.of(h, s.name)));
+            return true;
+        }
+        return false;
+    }
+
+    /** Whether the robot's last request was to guide a person (see {@link #request(String, List, boolean)}). */
+    public boolean guiding(String robot) {
+        return guides.contains(robot);
     }
 
     /**
@@ -401,6 +454,7 @@ public final class ReservationTable {
     public Changes remove(String robot) {
         RobotState s = robot(robot);
         withdraw(s);
+        guides.remove(robot);
         release(s, new LinkedHashSet<>(s.holding));
         robots.remove(robot);
         return regrant();

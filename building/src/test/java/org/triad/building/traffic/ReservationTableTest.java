@@ -389,4 +389,51 @@ class ReservationTableTest {
         assertEquals("robot r9 is not on the traffic map (place it first)",
                 assertThrows(IllegalStateException.class, () -> t.request("r9", route("hall-w", "c1"))).getMessage());
     }
+
+    /**
+     * The service's mixed benchmark: courier-3 guiding Alice from c1 to c4, courier-6 at c4 waiting for c1. Refusing the
+     * guide had it step aside without the person, or stand (24 of 107 deadlock refusals were that guide). A guide does
+     * not make way: the robot of the cycle that waits and guides nobody is refused instead and steps aside.
+     */
+    @Test
+    void aRobotGuidingAPersonDoesNotMakeWayTheOtherRobotOfTheCycleIsRefusedInstead() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c1").node("c4").node("c5")
+                .edge("c0", "c1").edge("c1", "c4").edge("c4", "c5").build();
+        ReservationTable plain = table(map);
+        plain.place("guide", "c1");
+        plain.place("other", "c4");
+        assertInstanceOf(Waiting.class, plain.request("other", route("c4", "c1", "c0")));
+        assertInstanceOf(Refused.class, plain.request("guide", route("c1", "c4", "c5")), "a plain drive is refused as before");
+
+        ReservationTable t = table(map);
+        t.place("guide", "c1");
+        t.place("other", "c4");
+        assertInstanceOf(Waiting.class, t.request("other", route("c4", "c1", "c0")));
+        assertInstanceOf(Waiting.class, t.request("guide", route("c1", "c4", "c5"), true), "the guide queues for c4");
+        List<Refused> displaced = t.takeDisplaced();
+        assertEquals(1, displaced.size());
+        assertEquals("other", displaced.get(0).robot());
+        assertEquals(List.of("other", "guide"), displaced.get(0).cycle());
+        assertTrue(displaced.get(0).reason().contains("other makes way"), displaced.get(0).reason());
+        assertTrue(t.waiting("other").isEmpty(), "its wait is withdrawn");
+        assertTrue(t.waitsFor().values().stream().noneMatch(w -> w.contains("guide")), "no wait-for cycle is left");
+
+        // the other steps aside to c5 (granted: the guide waits for c4 only), and the guide goes
+        assertInstanceOf(Granted.class, t.request("other", route("c4", "c5")));
+        Changes c = driveBase(t, "other");
+        assertEquals(List.of("guide"), c.granted().stream().map(Granted::robot).toList());
+    }
+
+    @Test
+    void twoGuidesInACycleAreRefusedAsBefore() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c1").node("c4").node("c5")
+                .edge("c0", "c1").edge("c1", "c4").edge("c4", "c5").build();
+        ReservationTable t = table(map);
+        t.place("a", "c1");
+        t.place("b", "c4");
+        assertInstanceOf(Waiting.class, t.request("b", route("c4", "c1", "c0"), true));
+        assertInstanceOf(Refused.class, t.request("a", route("c1", "c4", "c5"), true), "nobody in the cycle can make way but the asker");
+        assertTrue(t.takeDisplaced().isEmpty());
+        assertTrue(t.waiting("b").isPresent());
+    }
 }

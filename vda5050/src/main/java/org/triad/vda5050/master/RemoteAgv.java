@@ -378,9 +378,13 @@ public final class RemoteAgv implements FailureExplaining {
         boolean placed = idle ? traffic.relocate(name(), route.get(0)) : traffic.place(name(), route.get(0));
         if (!placed || !traffic.decisionPoint(name()).equals(route.get(0))) {
             synchronized (lock) {
-                return fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
+                fail(call + " on AGV " + name() + " refused by traffic control: the robot stands at '"
                         + (traffic.read(t -> t.robots().contains(name())) ? traffic.decisionPoint(name()) : "?")
                         + "' on the traffic map, or its node has no room");
+                // the map's place against the AGV's, or others queued for its node: traffic's trouble, not the robot's (three
+                // such FAULTs in 6 s took a sound courier out of the service's dispatch)
+                lastCause = Failure.Cause.CONGESTION;
+                return false;
             }
         }
         if (mayStepAside && traffic.deadEndTaken(name(), route.get(0), route.get(1))) {

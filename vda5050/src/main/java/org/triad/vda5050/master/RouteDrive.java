@@ -108,7 +108,7 @@ final class RouteDrive {
 
     /** Asks for the first stretches and sends the order (its base possibly just the start node); a reason when refused. */
     Optional<String> start() {
-        Decision d = traffic.request(robot, route);
+        Decision d = traffic.request(robot, route, guiding());
         if (d instanceof Refused r) {
             refusal = r;
             return Optional.of(r.reason());
@@ -253,7 +253,7 @@ final class RouteDrive {
     /** Asks for further stretches while the robot is in its last granted one; a reason when refused. */
     private Optional<String> askAhead() {
         while (!waiting && baseEnd < route.size() - 1 && stretchEnds.stream().filter(e -> e > passed).count() <= 1) {
-            Decision d = traffic.request(robot, route.subList(baseEnd, route.size()));
+            Decision d = traffic.request(robot, route.subList(baseEnd, route.size()), guiding());
             if (d instanceof Refused r) {
                 refusal = r;
                 return Optional.of(r.reason());
@@ -281,6 +281,11 @@ final class RouteDrive {
         stretchEnds.add(baseEnd);
         send(from);
         return Optional.empty();
+    }
+
+    /** Whether the robot guides a person on the drive: it does not make way (the person would be left behind). */
+    private boolean guiding() {
+        return edgeActions.stream().anyMatch(a -> a != null && a.actionType().equals("guide"));
     }
 
     /** Whether traffic control refused the drive to avoid a deadlock (a refusal naming a cycle; a blocked place names none). */

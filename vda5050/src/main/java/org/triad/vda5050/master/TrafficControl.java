@@ -110,7 +110,8 @@ public final class TrafficControl {
      */
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
         for (String w : cycle) {
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && wayOut(w).isPresent()) {
+            // never a robot guiding a person: it would leave its person behind (see ReservationTable's guide case)
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w) && wayOut(w).isPresent()) {
                 makingWay.add(w);
                 log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
                 return Optional.of(w);
@@ -272,27 +273,58 @@ public final class TrafficControl {
      * The robot stands idle at {@code node} of its base, short of its decision point (its last drive failed and the
      * AGV stopped before it): its base ends there from now on, what lay beyond freed, so that it can start again
      * from where it stands. At its decision point, what lies behind it on its base is released (its last call may have
-     * ended before the AGV reported passing it). False when {@code node} is not on its base (the map does not know
-     * where it is) or while it waits for a stretch.
+     * ended before the AGV reported passing it). At a node off its base, the map is out of date and is put right (see
+     * {@link #resync}); a wait left over from an ended call is withdrawn. False when its node has no room for it.
      */
     synchronized boolean relocate(String robot, String node) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
             return place(robot, node);
         }
+        if (table.waiting(robot).isPresent()) {
+            // an idle robot starting a drive has no call waiting for it (one call at a time per robot): a wait left over
+            // from an ended call would keep it off the map's place it stands at for good
+            log.accept("traffic: " + robot + " starts again while a wait of an ended call was left: withdrawn");
+            deliver(table.cancel(robot));
+        }
         if (table.decisionPoint(robot).equals(node)) {
             // it stands at its decision point: what lies behind on its base (not reported passed, say after its last call
             // ended there) is free, or robots waiting for it would wait for a robot the wait-for graph does not see
-            if (table.waiting(robot).isEmpty() && table.base(robot).size() > 1) {
+            if (table.base(robot).size() > 1) {
                 deliver(table.passed(robot, node));
             }
             return true;
         }
-        if (table.waiting(robot).isPresent() || !table.released(robot, node)) {
-            return false;
+        if (!table.released(robot, node)) {
+            return resync(robot, node);
         }
         log.accept("traffic: " + robot + " stands idle at " + node + ", short of its decision point " + table.decisionPoint(robot)
                 + ": its base ends there");
         deliver(table.truncate(robot, node));
+        return true;
+    }
+
+    /**
+     * The AGV reports standing idle at {@code node}, which is not on its base: the map is out of date (the service's mixed
+     * benchmark: courier-5 stepped aside from {@code c0} towards the pharmacy, its AGV stopped at {@code c0} and reported
+     * it, the map kept it in the pharmacy, and every later drive from {@code c0} was refused, three of them in a row
+     * taking the robot out of dispatch). What the AGV reports is where it stands: it is put on the map there, what it held
+     * freed, when the node has room for it after everyone who holds or waits for it (rule 5, as for a robot placed anew);
+     * otherwise false and it stays where the map had it.
+     */
+    private boolean resync(String robot, String node) {
+        if (!table.map().hasNode(node)) {
+            return false;
+        }
+        boolean room = table.map().standing(node).stream().allMatch(r -> othersNeeding(r, robot) + 1 <= r.capacity());
+        if (!room) {
+            log.accept("traffic: " + robot + " reports standing at " + node + ", the map has it at " + table.decisionPoint(robot)
+                    + ", and " + node + " has no room for it: left where the map has it");
+            return false;
+        }
+        log.accept("traffic: " + robot + " reports standing at " + node + ", the map had it at " + table.decisionPoint(robot)
+                + " (base " + table.base(robot) + "): put where it stands, what it held freed");
+        deliver(table.remove(robot));
+        table.place(robot, node);
         return true;
     }
 
@@ -305,10 +337,15 @@ public final class TrafficControl {
     }
 
     synchronized Decision request(String robot, List<String> route) {
+        return request(robot, route, false);
+    }
+
+    /** @param guiding whether the robot guides a person along the route: it does not make way, the others of a cycle do */
+    synchronized Decision request(String robot, List<String> route, boolean guiding) {
         mailbox.remove(robot);
         displaced.remove(robot); // a refusal its last call did not pick up says nothing about this one
         requests++;
-        Decision d = table.request(robot, route);
+        Decision d = table.request(robot, route, guiding);
         for (Refused r : table.takeDisplaced()) { // robots waiting at the door of the dead end this one comes out of
             log.accept("traffic: " + r.reason());
             mailbox.put(r.robot(), r);

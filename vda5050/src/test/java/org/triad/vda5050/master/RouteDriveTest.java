@@ -179,4 +179,70 @@ class RouteDriveTest {
         drive.abandon(false);
         assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "it may stand on the edge to b: it keeps a-b and b, not c");
     }
+
+    /**
+     * The service's mixed benchmark: courier-5 stepped aside from {@code c0} into the pharmacy, traffic control had it
+     * there, its idle AGV (and so the plan) said {@code c0}, and every drive from {@code c0} was refused as a FAULT until
+     * the robot was out of dispatch. The AGV's report wins when its node has room: the map is put right and the drive starts.
+     */
+    @Test
+    void anIdleAgvReportingANodeOffItsBaseIsPutThereOnTheMapWhenTheNodeHasRoom() {
+        TrafficMap map = TrafficMap.builder().node("pharmacy").node("c0").node("c1").node("c2")
+                .edge("pharmacy", "c0").edge("c0", "c1").edge("c1", "c2").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "c0"));
+        assertTrue(traffic.place("B", "c1"));
+        assertEquals(java.util.Optional.of("pharmacy"), traffic.aside("A"));
+        RouteDrive aside = new RouteDrive("A", List.of("c0", "pharmacy"), "oA", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(aside.start().isEmpty());
+        assertNull(aside.onState(state("oA", "pharmacy", 2, false)).failure());
+        assertEquals("pharmacy", traffic.decisionPoint("A"));
+
+        // the AGV reports c0, idle: the map follows it, and the pharmacy is free again
+        assertTrue(traffic.relocate("A", "c0"));
+        assertEquals(List.of("c0"), traffic.read(t -> t.base("A")));
+        assertTrue(traffic.place("C", "pharmacy"), "nobody holds the pharmacy now");
+
+        // a node others hold has no room: the map is left as it was, and the drive is refused (not the robot's fault)
+        assertFalse(traffic.relocate("A", "pharmacy"), "C stands in the pharmacy");
+        assertEquals("c0", traffic.decisionPoint("A"));
+    }
+
+    /**
+     * courier-3 guiding Alice from c1 to c4 while courier-6 at c4 waits for c1 (the service's benchmark): the guide's drive
+     * is queued, not refused; courier-6's drive ends having made way (so {@code RemoteAgv} steps it aside), and once it is
+     * out of c4 the guide goes. A guide is never the robot asked to make way for a refused one either.
+     */
+    @Test
+    void aRobotGuidingAPersonIsQueuedAndTheRobotItWouldWaitForMakesWay() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c1").node("c4").node("c5")
+                .edge("c0", "c1").edge("c1", "c4").edge("c4", "c5").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("guide", "c1"));
+        assertTrue(traffic.place("other", "c4"));
+        RouteDrive other = new RouteDrive("other", List.of("c4", "c1", "c0"), "oO", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(other.start().isEmpty());
+        assertTrue(traffic.read(t -> t.waiting("other")).isPresent(), "other waits for c1");
+
+        org.triad.vda5050.protocol.Messages.Action guide = new org.triad.vda5050.protocol.Messages.Action("guide", "g1", null,
+                org.triad.vda5050.protocol.Messages.BlockingType.HARD,
+                List.of(new org.triad.vda5050.protocol.Messages.ActionParameter("personId", "alice")));
+        RouteDrive guiding = new RouteDrive("guide", List.of("c1", "c4"), "oG", traffic, (id, u, n, e) -> { }, why -> { }, List.of(guide));
+        assertTrue(guiding.start().isEmpty(), "the guide is not refused");
+        assertTrue(traffic.read(t -> t.waiting("guide")).isPresent(), "it waits for c4");
+        assertTrue(traffic.askToMakeWay("other", List.of("other", "guide")).isEmpty(), "a guide is not asked to make way");
+
+        RouteDrive.Verdict v = other.onState(state("oO", "c4", 0, false));
+        assertNotNull(v.failure());
+        assertTrue(v.congestion());
+        assertTrue(other.madeWay(), v.failure());
+        assertTrue(other.deadlockAvoided(), "RemoteAgv.stepAsideAfter moves it");
+        other.abandon(false);
+        assertEquals(java.util.Optional.of("c5"), traffic.wayOut("other"));
+        RouteDrive aside = new RouteDrive("other", List.of("c4", "c5"), "oO2", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(aside.start().isEmpty());
+        assertNull(aside.onState(state("oO2", "c5", 2, false)).failure());
+        assertNull(guiding.onState(state("oG", "c1", 0, false)).failure(), "the guide is granted c4");
+        assertEquals(List.of("c1", "c4"), traffic.read(t -> t.base("guide")));
+    }
 }
