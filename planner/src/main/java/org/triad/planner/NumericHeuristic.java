@@ -470,8 +470,19 @@ final class NumericHeuristic {
      * the metric it is the layer estimate. Not admissible; it orders weighted A* by cost.
      */
     double estimateCost(BitSet facts, double[] values) {
+        return estimateCost(facts, values, null);
+    }
+
+    /**
+     * {@link #estimateCost}; {@code layerEstimate[0]} (when given) gets {@link #estimate}'s value when the
+     * same graph gave it (-1 when not): until the goal holds the cost graph is the layer estimate's, so
+     * a search that wants both builds one graph, not two.
+     */
+    double estimateCost(BitSet facts, double[] values, int[] layerEstimate) {
+        if (layerEstimate != null) layerEstimate[0] = -1;
         if (cheapest == 0) {
             int h = estimate(facts, values);
+            if (layerEstimate != null) layerEstimate[0] = h;
             return h == DEAD_END ? Double.POSITIVE_INFINITY : h;
         }
         if (choices) return estimateCostByLayers(facts, values);
@@ -481,6 +492,19 @@ final class NumericHeuristic {
         int[] goalLayer = new int[goals.size()];
         java.util.Arrays.fill(goalLayer, -1);
         if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) return Double.POSITIVE_INFINITY;
+        if (layerEstimate != null) {
+            // every goal reached: the sum of their first layers is what estimate returns (its graph is this
+            // one up to that layer); a goal out of reach is left to estimate itself
+            int sum = 0;
+            for (int l : goalLayer) {
+                if (l < 0) {
+                    sum = -1;
+                    break;
+                }
+                sum += l;
+            }
+            layerEstimate[0] = sum;
+        }
         double[] own = new double[no];
         for (int o = 0; o < no; o++) {
             if (opLayer[o] >= 0) own[o] = opCost[o] + (numericHolds(preRest[o], values) ? 0 : cheapest * Math.max(1, opLayer[o]));
@@ -819,25 +843,52 @@ final class NumericHeuristic {
 
     private static void widen(NumericTask.NumEffect n, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
         int f = n.fluent();
-        double[] v = n.value() instanceof NumericTask.Num k ? null : interval(n.value(), lo, hi);
-        if (n.value() instanceof NumericTask.Num k && !n.kind().equals("assign") && !Double.isNaN(lo[f])) {
+        // the kind by its characters (increase, decrease, assign, scale-up, scale-down), not by string
+        // switches: this runs for every widening effect in every layer of every state's graph
+        String kind = n.kind();
+        char k0 = kind.charAt(0);
+        if (n.value() instanceof NumericTask.Num k && k0 != 'a' && !Double.isNaN(lo[f])) {
             // the common case (a constant step: distance tables fold to constants) without allocations
             double x = k.value();
             double a = lo[f], b = hi[f];
-            switch (n.kind()) {
-                case "increase" -> { a += x; b += x; }
-                case "decrease" -> { a -= x; b -= x; }
-                default -> {
-                    double[] c = n.kind().equals("scale-up") ? product(new double[] { a, b }, new double[] { x, x })
-                            : quotient(new double[] { a, b }, new double[] { x, x });
-                    a = c[0];
-                    b = c[1];
-                }
+            if (k0 == 'i') {
+                a += x;
+                b += x;
+            } else if (k0 == 'd') {
+                a -= x;
+                b -= x;
+            } else {
+                double[] c = kind.charAt(6) == 'u' ? product(new double[] { a, b }, new double[] { x, x })
+                        : quotient(new double[] { a, b }, new double[] { x, x });
+                a = c[0];
+                b = c[1];
             }
             nextLo[f] = Double.isNaN(nextLo[f]) ? a : Math.min(nextLo[f], a);
             nextHi[f] = Double.isNaN(nextHi[f]) ? b : Math.max(nextHi[f], b);
             return;
         }
+        if (k0 != 's') {
+            // an added, subtracted or assigned expression, its bounds without arrays; an undefined or not a
+            // number bound takes the general way below, which does what it always did
+            double vl = low(n.value(), lo, hi);
+            double vh = high(n.value(), lo, hi);
+            if (!Double.isNaN(vl) && !Double.isNaN(vh)) {
+                double a;
+                double b;
+                if (k0 == 'a') {
+                    a = vl;
+                    b = vh;
+                } else {
+                    if (Double.isNaN(lo[f])) return;
+                    a = k0 == 'i' ? lo[f] + vl : lo[f] - vh;
+                    b = k0 == 'i' ? hi[f] + vh : hi[f] - vl;
+                }
+                nextLo[f] = Double.isNaN(nextLo[f]) ? a : Math.min(nextLo[f], a);
+                nextHi[f] = Double.isNaN(nextHi[f]) ? b : Math.max(nextHi[f], b);
+                return;
+            }
+        }
+        double[] v = interval(n.value(), lo, hi);
         if (v == null) v = interval(n.value(), lo, hi);
         if (v == null) return;
         double a;
@@ -873,16 +924,60 @@ final class NumericHeuristic {
         }
         if (c instanceof NumericTask.Const k) return k.value();
         NumericTask.Cmp m = (NumericTask.Cmp) c;
-        double[] l = interval(m.left(), lo, hi);
-        double[] r = interval(m.right(), lo, hi);
-        if (l == null || r == null) return false;
-        return switch (m.op()) {
-            case "<" -> l[0] < r[1];
-            case "<=" -> l[0] <= r[1];
-            case ">" -> l[1] > r[0];
-            case ">=" -> l[1] >= r[0];
-            default -> l[0] <= r[1] && r[0] <= l[1];
+        // the bounds one at a time, without arrays: this runs for every open condition in every layer of
+        // every state's graph (the most of a numeric search's time). An undefined fluent gives NaN, and
+        // every comparison with NaN is false, as interval's null was.
+        String op = m.op();
+        char c0 = op.charAt(0);
+        boolean strict = op.length() == 1;
+        if (c0 == '<') {
+            double l = low(m.left(), lo, hi);
+            double r = high(m.right(), lo, hi);
+            return strict ? l < r : l <= r;
+        }
+        if (c0 == '>') {
+            double l = high(m.left(), lo, hi);
+            double r = low(m.right(), lo, hi);
+            return strict ? l > r : l >= r;
+        }
+        double ll = low(m.left(), lo, hi);
+        double lh = high(m.left(), lo, hi);
+        double rl = low(m.right(), lo, hi);
+        double rh = high(m.right(), lo, hi);
+        if (Double.isNaN(ll) || Double.isNaN(lh) || Double.isNaN(rl) || Double.isNaN(rh)) return false;
+        return ll <= rh && rl <= lh;
+    }
+
+    /** The lower bound of {@link #interval}'s interval, NaN where it is null. */
+    static double low(NumericTask.Expr e, double[] lo, double[] hi) {
+        if (e instanceof NumericTask.Num n) return n.value();
+        if (e instanceof NumericTask.Var v) return lo[v.fluent()];
+        if (e instanceof NumericTask.Neg n) return -high(n.operand(), lo, hi);
+        NumericTask.Bin b = (NumericTask.Bin) e;
+        return switch (b.op()) {
+            case '+' -> low(b.left(), lo, hi) + low(b.right(), lo, hi);
+            case '-' -> low(b.left(), lo, hi) - high(b.right(), lo, hi);
+            default -> bound(b, lo, hi, true);
         };
+    }
+
+    /** The upper bound of {@link #interval}'s interval, NaN where it is null. */
+    static double high(NumericTask.Expr e, double[] lo, double[] hi) {
+        if (e instanceof NumericTask.Num n) return n.value();
+        if (e instanceof NumericTask.Var v) return Double.isNaN(lo[v.fluent()]) ? Double.NaN : hi[v.fluent()];
+        if (e instanceof NumericTask.Neg n) return -low(n.operand(), lo, hi);
+        NumericTask.Bin b = (NumericTask.Bin) e;
+        return switch (b.op()) {
+            case '+' -> high(b.left(), lo, hi) + high(b.right(), lo, hi);
+            case '-' -> high(b.left(), lo, hi) - low(b.right(), lo, hi);
+            default -> bound(b, lo, hi, false);
+        };
+    }
+
+    /** A product's or quotient's bound: rare in conditions, so through {@link #interval}. */
+    private static double bound(NumericTask.Bin b, double[] lo, double[] hi, boolean lower) {
+        double[] v = interval(b, lo, hi);
+        return v == null ? Double.NaN : lower ? v[0] : v[1];
     }
 
     /** The interval of an expression, or null while a fluent it reads has no value yet. */
