@@ -807,6 +807,19 @@ final class NumericHeuristic {
 
     /** Whether every open goal can hold when facts are never deleted and every comparison counts as true. */
     private boolean optimisticallyReachable(BitSet from, boolean[] done) {
+        BitSet facts = optimisticClosure(from);
+        for (int g = 0; g < goals.size(); g++) if (!done[g] && !optimistic(goals.get(g), facts)) return false;
+        return true;
+    }
+
+    /**
+     * The facts reachable from {@code from} when facts are never deleted and every comparison counts as
+     * true; cached by {@code from} (a fixpoint over all operators, asked again by many states whose graphs
+     * stall on the same facts: a sixth of IPC sugar's time before).
+     */
+    private BitSet optimisticClosure(BitSet from) {
+        BitSet known = closures.get(from);
+        if (known != null) return known;
         BitSet facts = (BitSet) from.clone();
         boolean grew = true;
         while (grew) {
@@ -824,9 +837,12 @@ final class NumericHeuristic {
                 }
             }
         }
-        for (int g = 0; g < goals.size(); g++) if (!done[g] && !optimistic(goals.get(g), facts)) return false;
-        return true;
+        if (closures.size() < CACHED_CLOSURES) closures.put((BitSet) from.clone(), facts);
+        return facts;
     }
+
+    private final java.util.Map<BitSet, BitSet> closures = new java.util.HashMap<>();
+    private static final int CACHED_CLOSURES = 20_000;
 
     private static boolean optimistic(NumericTask.Cond c, BitSet facts) {
         if (c instanceof NumericTask.Fact f) return !f.positive() || facts.get(f.id());
