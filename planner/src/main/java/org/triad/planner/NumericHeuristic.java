@@ -219,6 +219,7 @@ final class NumericHeuristic {
      * (or {@link #DEAD_END}).
      */
     private int layers(BitSet facts, double[] values, int[] opLayer, int[] goalLayer, int after) {
+        ranOut = false;
         int no = task.ops.size();
         BitSet reached = (BitSet) facts.clone();
         double[] lo = values.clone();
@@ -309,7 +310,9 @@ final class NumericHeuristic {
             for (int i = 0; i < lo.length && !numbersChanged; i++) numbersChanged = matters(i, lo, hi, nextLo, nextHi);
             changed |= numbersChanged;
             if (!changed) return after >= 0 && allReachedAt >= 0 ? 0 : DEAD_END;
-            if (na == 0 && !checkedOptimistically && after < 0) {
+            if (na == 0 && !checkedOptimistically && allReachedAt < 0) {
+                // (with after, too, while a goal is open: a goal out of this reach never holds, so the graph
+                // would end in DEAD_END all the same, only later)
                 // only numbers still grow, perhaps forever: a goal that needs a fact no action can add is out of reach
                 checkedOptimistically = true;
                 if (!optimisticallyReachable(reached, done)) return DEAD_END;
@@ -323,8 +326,12 @@ final class NumericHeuristic {
             lo = nextLo;
             hi = nextHi;
         }
+        ranOut = true;
         return after >= 0 ? (open == 0 ? 0 : DEAD_END) : sum + open * MAX_LAYERS;
     }
+
+    /** Whether the last {@link #layers} ended at {@link #MAX_LAYERS} (its DEAD_END is then not the layer estimate's). */
+    private boolean ranOut;
 
     /** Applies an operator's effects to the next layer; returns the new count of {@code added}. */
     private int apply(int o, BitSet reached, BitSet pending, double[] lo, double[] hi, double[] nextLo, double[] nextHi, int[] added, int na, boolean widening) {
@@ -491,7 +498,11 @@ final class NumericHeuristic {
         java.util.Arrays.fill(opLayer, -1);
         int[] goalLayer = new int[goals.size()];
         java.util.Arrays.fill(goalLayer, -1);
-        if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) return Double.POSITIVE_INFINITY;
+        if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) {
+            // a graph that stopped growing with a goal open is the layer estimate's too, up to there
+            if (layerEstimate != null && !ranOut) layerEstimate[0] = DEAD_END;
+            return Double.POSITIVE_INFINITY;
+        }
         if (layerEstimate != null) {
             // every goal reached: the sum of their first layers is what estimate returns (its graph is this
             // one up to that layer); a goal out of reach is left to estimate itself

@@ -473,7 +473,7 @@ final class NumericSearch {
             if (costs.containsKey(s)) return estimate(h, s);
             double c = h.estimateCost(s.facts, s.values, layer);
             if (costs.size() < CACHED) costs.put(s, c);
-            if (layer[0] < 0) return estimate(h, s);
+            if (layer[0] < 0) return estimate(h, s); // a goal out of the cost graph's reach: the layer estimate decides
             if (layers.size() < CACHED) layers.put(s, layer[0]);
             return layer[0];
         }
