@@ -219,6 +219,7 @@ final class NumericHeuristic {
      * (or {@link #DEAD_END}).
      */
     private int layers(BitSet facts, double[] values, int[] opLayer, int[] goalLayer, int after) {
+        ranOut = false;
         int no = task.ops.size();
         BitSet reached = (BitSet) facts.clone();
         double[] lo = values.clone();
@@ -309,7 +310,9 @@ final class NumericHeuristic {
             for (int i = 0; i < lo.length && !numbersChanged; i++) numbersChanged = matters(i, lo, hi, nextLo, nextHi);
             changed |= numbersChanged;
             if (!changed) return after >= 0 && allReachedAt >= 0 ? 0 : DEAD_END;
-            if (na == 0 && !checkedOptimistically && after < 0) {
+            if (na == 0 && !checkedOptimistically && allReachedAt < 0) {
+                // (with after, too, while a goal is open: a goal out of this reach never holds, so the graph
+                // would end in DEAD_END all the same, only later)
                 // only numbers still grow, perhaps forever: a goal that needs a fact no action can add is out of reach
                 checkedOptimistically = true;
                 if (!optimisticallyReachable(reached, done)) return DEAD_END;
@@ -323,8 +326,12 @@ final class NumericHeuristic {
             lo = nextLo;
             hi = nextHi;
         }
+        ranOut = true;
         return after >= 0 ? (open == 0 ? 0 : DEAD_END) : sum + open * MAX_LAYERS;
     }
+
+    /** Whether the last {@link #layers} ended at {@link #MAX_LAYERS} (its DEAD_END is then not the layer estimate's). */
+    private boolean ranOut;
 
     /** Applies an operator's effects to the next layer; returns the new count of {@code added}. */
     private int apply(int o, BitSet reached, BitSet pending, double[] lo, double[] hi, double[] nextLo, double[] nextHi, int[] added, int na, boolean widening) {
@@ -470,8 +477,19 @@ final class NumericHeuristic {
      * the metric it is the layer estimate. Not admissible; it orders weighted A* by cost.
      */
     double estimateCost(BitSet facts, double[] values) {
+        return estimateCost(facts, values, null);
+    }
+
+    /**
+     * {@link #estimateCost}; {@code layerEstimate[0]} (when given) gets {@link #estimate}'s value when the
+     * same graph gave it (-1 when not): until the goal holds the cost graph is the layer estimate's, so
+     * a search that wants both builds one graph, not two.
+     */
+    double estimateCost(BitSet facts, double[] values, int[] layerEstimate) {
+        if (layerEstimate != null) layerEstimate[0] = -1;
         if (cheapest == 0) {
             int h = estimate(facts, values);
+            if (layerEstimate != null) layerEstimate[0] = h;
             return h == DEAD_END ? Double.POSITIVE_INFINITY : h;
         }
         if (choices) return estimateCostByLayers(facts, values);
@@ -480,7 +498,24 @@ final class NumericHeuristic {
         java.util.Arrays.fill(opLayer, -1);
         int[] goalLayer = new int[goals.size()];
         java.util.Arrays.fill(goalLayer, -1);
-        if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) return Double.POSITIVE_INFINITY;
+        if (layers(facts, values, opLayer, goalLayer, COST_LAYERS_AFTER) == DEAD_END) {
+            // a graph that stopped growing with a goal open is the layer estimate's too, up to there
+            if (layerEstimate != null && !ranOut) layerEstimate[0] = DEAD_END;
+            return Double.POSITIVE_INFINITY;
+        }
+        if (layerEstimate != null) {
+            // every goal reached: the sum of their first layers is what estimate returns (its graph is this
+            // one up to that layer); a goal out of reach is left to estimate itself
+            int sum = 0;
+            for (int l : goalLayer) {
+                if (l < 0) {
+                    sum = -1;
+                    break;
+                }
+                sum += l;
+            }
+            layerEstimate[0] = sum;
+        }
         double[] own = new double[no];
         for (int o = 0; o < no; o++) {
             if (opLayer[o] >= 0) own[o] = opCost[o] + (numericHolds(preRest[o], values) ? 0 : cheapest * Math.max(1, opLayer[o]));
@@ -783,6 +818,19 @@ final class NumericHeuristic {
 
     /** Whether every open goal can hold when facts are never deleted and every comparison counts as true. */
     private boolean optimisticallyReachable(BitSet from, boolean[] done) {
+        BitSet facts = optimisticClosure(from);
+        for (int g = 0; g < goals.size(); g++) if (!done[g] && !optimistic(goals.get(g), facts)) return false;
+        return true;
+    }
+
+    /**
+     * The facts reachable from {@code from} when facts are never deleted and every comparison counts as
+     * true; cached by {@code from} (a fixpoint over all operators, asked again by many states whose graphs
+     * stall on the same facts: a sixth of IPC sugar's time before).
+     */
+    private BitSet optimisticClosure(BitSet from) {
+        BitSet known = closures.get(from);
+        if (known != null) return known;
         BitSet facts = (BitSet) from.clone();
         boolean grew = true;
         while (grew) {
@@ -800,9 +848,12 @@ final class NumericHeuristic {
                 }
             }
         }
-        for (int g = 0; g < goals.size(); g++) if (!done[g] && !optimistic(goals.get(g), facts)) return false;
-        return true;
+        if (closures.size() < CACHED_CLOSURES) closures.put((BitSet) from.clone(), facts);
+        return facts;
     }
+
+    private final java.util.Map<BitSet, BitSet> closures = new java.util.HashMap<>();
+    private static final int CACHED_CLOSURES = 20_000;
 
     private static boolean optimistic(NumericTask.Cond c, BitSet facts) {
         if (c instanceof NumericTask.Fact f) return !f.positive() || facts.get(f.id());
@@ -819,25 +870,52 @@ final class NumericHeuristic {
 
     private static void widen(NumericTask.NumEffect n, double[] lo, double[] hi, double[] nextLo, double[] nextHi) {
         int f = n.fluent();
-        double[] v = n.value() instanceof NumericTask.Num k ? null : interval(n.value(), lo, hi);
-        if (n.value() instanceof NumericTask.Num k && !n.kind().equals("assign") && !Double.isNaN(lo[f])) {
+        // the kind by its characters (increase, decrease, assign, scale-up, scale-down), not by string
+        // switches: this runs for every widening effect in every layer of every state's graph
+        String kind = n.kind();
+        char k0 = kind.charAt(0);
+        if (n.value() instanceof NumericTask.Num k && k0 != 'a' && !Double.isNaN(lo[f])) {
             // the common case (a constant step: distance tables fold to constants) without allocations
             double x = k.value();
             double a = lo[f], b = hi[f];
-            switch (n.kind()) {
-                case "increase" -> { a += x; b += x; }
-                case "decrease" -> { a -= x; b -= x; }
-                default -> {
-                    double[] c = n.kind().equals("scale-up") ? product(new double[] { a, b }, new double[] { x, x })
-                            : quotient(new double[] { a, b }, new double[] { x, x });
-                    a = c[0];
-                    b = c[1];
-                }
+            if (k0 == 'i') {
+                a += x;
+                b += x;
+            } else if (k0 == 'd') {
+                a -= x;
+                b -= x;
+            } else {
+                double[] c = kind.charAt(6) == 'u' ? product(new double[] { a, b }, new double[] { x, x })
+                        : quotient(new double[] { a, b }, new double[] { x, x });
+                a = c[0];
+                b = c[1];
             }
             nextLo[f] = Double.isNaN(nextLo[f]) ? a : Math.min(nextLo[f], a);
             nextHi[f] = Double.isNaN(nextHi[f]) ? b : Math.max(nextHi[f], b);
             return;
         }
+        if (k0 != 's') {
+            // an added, subtracted or assigned expression, its bounds without arrays; an undefined or not a
+            // number bound takes the general way below, which does what it always did
+            double vl = low(n.value(), lo, hi);
+            double vh = high(n.value(), lo, hi);
+            if (!Double.isNaN(vl) && !Double.isNaN(vh)) {
+                double a;
+                double b;
+                if (k0 == 'a') {
+                    a = vl;
+                    b = vh;
+                } else {
+                    if (Double.isNaN(lo[f])) return;
+                    a = k0 == 'i' ? lo[f] + vl : lo[f] - vh;
+                    b = k0 == 'i' ? hi[f] + vh : hi[f] - vl;
+                }
+                nextLo[f] = Double.isNaN(nextLo[f]) ? a : Math.min(nextLo[f], a);
+                nextHi[f] = Double.isNaN(nextHi[f]) ? b : Math.max(nextHi[f], b);
+                return;
+            }
+        }
+        double[] v = interval(n.value(), lo, hi);
         if (v == null) v = interval(n.value(), lo, hi);
         if (v == null) return;
         double a;
@@ -873,16 +951,60 @@ final class NumericHeuristic {
         }
         if (c instanceof NumericTask.Const k) return k.value();
         NumericTask.Cmp m = (NumericTask.Cmp) c;
-        double[] l = interval(m.left(), lo, hi);
-        double[] r = interval(m.right(), lo, hi);
-        if (l == null || r == null) return false;
-        return switch (m.op()) {
-            case "<" -> l[0] < r[1];
-            case "<=" -> l[0] <= r[1];
-            case ">" -> l[1] > r[0];
-            case ">=" -> l[1] >= r[0];
-            default -> l[0] <= r[1] && r[0] <= l[1];
+        // the bounds one at a time, without arrays: this runs for every open condition in every layer of
+        // every state's graph (the most of a numeric search's time). An undefined fluent gives NaN, and
+        // every comparison with NaN is false, as interval's null was.
+        String op = m.op();
+        char c0 = op.charAt(0);
+        boolean strict = op.length() == 1;
+        if (c0 == '<') {
+            double l = low(m.left(), lo, hi);
+            double r = high(m.right(), lo, hi);
+            return strict ? l < r : l <= r;
+        }
+        if (c0 == '>') {
+            double l = high(m.left(), lo, hi);
+            double r = low(m.right(), lo, hi);
+            return strict ? l > r : l >= r;
+        }
+        double ll = low(m.left(), lo, hi);
+        double lh = high(m.left(), lo, hi);
+        double rl = low(m.right(), lo, hi);
+        double rh = high(m.right(), lo, hi);
+        if (Double.isNaN(ll) || Double.isNaN(lh) || Double.isNaN(rl) || Double.isNaN(rh)) return false;
+        return ll <= rh && rl <= lh;
+    }
+
+    /** The lower bound of {@link #interval}'s interval, NaN where it is null. */
+    static double low(NumericTask.Expr e, double[] lo, double[] hi) {
+        if (e instanceof NumericTask.Num n) return n.value();
+        if (e instanceof NumericTask.Var v) return lo[v.fluent()];
+        if (e instanceof NumericTask.Neg n) return -high(n.operand(), lo, hi);
+        NumericTask.Bin b = (NumericTask.Bin) e;
+        return switch (b.op()) {
+            case '+' -> low(b.left(), lo, hi) + low(b.right(), lo, hi);
+            case '-' -> low(b.left(), lo, hi) - high(b.right(), lo, hi);
+            default -> bound(b, lo, hi, true);
         };
+    }
+
+    /** The upper bound of {@link #interval}'s interval, NaN where it is null. */
+    static double high(NumericTask.Expr e, double[] lo, double[] hi) {
+        if (e instanceof NumericTask.Num n) return n.value();
+        if (e instanceof NumericTask.Var v) return Double.isNaN(lo[v.fluent()]) ? Double.NaN : hi[v.fluent()];
+        if (e instanceof NumericTask.Neg n) return -low(n.operand(), lo, hi);
+        NumericTask.Bin b = (NumericTask.Bin) e;
+        return switch (b.op()) {
+            case '+' -> high(b.left(), lo, hi) + high(b.right(), lo, hi);
+            case '-' -> high(b.left(), lo, hi) - low(b.right(), lo, hi);
+            default -> bound(b, lo, hi, false);
+        };
+    }
+
+    /** A product's or quotient's bound: rare in conditions, so through {@link #interval}. */
+    private static double bound(NumericTask.Bin b, double[] lo, double[] hi, boolean lower) {
+        double[] v = interval(b, lo, hi);
+        return v == null ? Double.NaN : lower ? v[0] : v[1];
     }
 
     /** The interval of an expression, or null while a fluent it reads has no value yet. */

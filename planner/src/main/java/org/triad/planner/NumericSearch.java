@@ -426,7 +426,9 @@ final class NumericSearch {
                     seen.put(next, -1);
                     continue;
                 }
-                int hv = additive > 0 ? (int) Math.min(ha, Integer.MAX_VALUE - 1) : exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1) : cache.estimate(h, next);
+                boolean costly = additive == 0 && !exact && weight > 0 && !allGoals;
+                int hv = additive > 0 ? (int) Math.min(ha, Integer.MAX_VALUE - 1) : exact ? (int) Math.min(lb, Integer.MAX_VALUE - 1)
+                        : costly ? cache.both(h, next) : cache.estimate(h, next);
                 evaluations[0]++;
                 if (hv == NumericHeuristic.DEAD_END) {
                     seen.put(next, -1);
@@ -460,6 +462,23 @@ final class NumericSearch {
             if (layers.size() < CACHED) layers.put(s, e);
             return e;
         }
+
+        /**
+         * {@link #estimate}, for a search that wants {@link #estimateCost} too: both from one graph when
+         * the cost is not known yet (the weighted restarts meet states the greedy search did not).
+         */
+        int both(NumericHeuristic h, Key s) {
+            Integer v = layers.get(s);
+            if (v != null) return v;
+            if (costs.containsKey(s)) return estimate(h, s);
+            double c = h.estimateCost(s.facts, s.values, layer);
+            if (costs.size() < CACHED) costs.put(s, c);
+            if (layer[0] < 0) return estimate(h, s); // a goal out of the cost graph's reach: the layer estimate decides
+            if (layers.size() < CACHED) layers.put(s, layer[0]);
+            return layer[0];
+        }
+
+        private final int[] layer = new int[1];
 
         double estimateCost(NumericHeuristic h, Key s) {
             Double v = costs.get(s);
@@ -564,12 +583,14 @@ final class NumericSearch {
             for (NumericTask.NumEffect n : e.numeric()) {
                 double amount = value(n.value(), s.values);
                 double current = s.values[n.fluent()];
-                double v = switch (n.kind()) {
-                    case "assign" -> amount;
-                    case "increase" -> current + amount;
-                    case "decrease" -> current - amount;
-                    case "scale-up" -> current * amount;
-                    default -> amount == 0 ? Double.NaN : current / amount;
+                String kind = n.kind();
+                // by its first characters (assign, increase, decrease, scale-up, scale-down): a string
+                // switch here hashed the kind for every effect of every successor
+                double v = switch (kind.charAt(0)) {
+                    case 'a' -> amount;
+                    case 'i' -> current + amount;
+                    case 'd' -> current - amount;
+                    default -> kind.charAt(6) == 'u' ? current * amount : amount == 0 ? Double.NaN : current / amount;
                 };
                 if (!Double.isFinite(v)) return null;
                 values[n.fluent()] = v == 0 ? 0 : v; // -0.0 and 0.0 are one state

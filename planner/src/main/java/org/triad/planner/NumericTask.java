@@ -547,12 +547,12 @@ final class NumericTask {
     }
 
     static boolean holds(String op, double l, double r) {
-        return switch (op) {
-            case "<" -> l < r;
-            case "<=" -> l <= r;
-            case ">" -> l > r;
-            case ">=" -> l >= r;
-            case "!=" -> l != r;
+        // by characters, not a switch on the string: the search checks every successor's comparisons
+        boolean strict = op.length() == 1;
+        return switch (op.charAt(0)) {
+            case '<' -> strict ? l < r : l <= r;
+            case '>' -> strict ? l > r : l >= r;
+            case '!' -> l != r;
             default -> l == r;
         };
     }
