@@ -234,7 +234,7 @@ class JavaGeneratorTest {
 		ActionRunner executor = (ActionRunner) hospital.load("HospitalActionExecutor").getConstructors()[0]
 				.newInstance(actors.robot, actors.world);
 		GroundAction walk = new GroundAction("Building", "walk", List.of(actors.object("alice"), actors.object("lobby"), actors.object("c4")));
-		assertEquals(Optional.of("Courier.following(p)"), executor.violatedPrecondition(walk, morning));
+		assertEquals(Optional.of("Building.walksAhead(p)"), executor.violatedPrecondition(walk, morning));
 		assertTrue(executor.execute(walk));
 		GroundAction pick = new GroundAction("Courier", "pick", List.of(actors.object("gauze"), actors.object("storage")));
 		assertTrue(executor.execute(pick));
