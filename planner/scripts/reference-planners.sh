@@ -20,7 +20,7 @@ cmake --build "$out/val/build" -j2 > "$out/val-build.log"
 # a parameter errno (a macro on glibc)
 rm -rf "$out/mff" && cp -r "$mff_src" "$out/mff"
 cd "$out/mff/v2.1"
-{ echo '#ifdef _WIN32'; cat times.c; echo '#endif'; } > times.c.new && mv times.c.new times.c
+{ echo '#ifdef _WIN32'; cat times.c; printf '\n#endif\n'; } > times.c.new && mv times.c.new times.c
 sed -i 's/int errno, char \*par/int err_no, char *par/; s/sact_err = errno;/sact_err = err_no;/' scan-fct_pddl.y scan-ops_pddl.y
 make > "$out/mff-build.log" 2>&1
 cd - > /dev/null
