@@ -13,6 +13,7 @@ import java.util.Arrays;
  * after 15,000 evaluations), so the plan improver, whose lazy search runs on those (the goal agenda's
  * logistics plans), leaves it out: see planner/BENCHMARK.md, sixth session. Complete with a closed
  * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
+ * {@link #weighted} makes it LAMA's later iterations (lazy weighted A* below a length bound).
  */
 final class LazyGreedySearch {
     private final FfHeuristic heuristic;
@@ -20,8 +21,6 @@ final class LazyGreedySearch {
     private final Successors successors;
     private final long deadline;
     private final boolean landmarkQueueOverAll;
-    /** Successors queued in descending operator order: among states of equal value the other ones come first. */
-    private boolean reverseTies;
     /** 0: greedy (keys are heuristic values); otherwise keys are g + weight * h, and a shorter path reopens a state. */
     private int weight;
     /** Paths of this many steps or more are pruned (only shorter plans are looked for). */
@@ -43,17 +42,6 @@ final class LazyGreedySearch {
         this.landmarks = landmarks;
         this.successors = successors;
         this.deadline = deadlineNanos;
-    }
-
-    /**
-     * Breaks ties the other way: a state's successors are queued in descending operator order, so among
-     * equally valued states the search tries the ones it would try last. Greedy plans depend on these
-     * ties (sokoban-sat11 p07: 83 to 117 steps over 13 operator orders); a second search with the
-     * other order is a second draw at no cost in determinism.
-     */
-    LazyGreedySearch reverseTies() {
-        reverseTies = true;
-        return this;
     }
 
     /**
@@ -210,7 +198,7 @@ final class LazyGreedySearch {
                 Arrays.sort(helpful);
                 int n = successors.applicable(state);
                 for (int i = 0; i < n; i++) {
-                    int o = successors.get(reverseTies ? n - 1 - i : i);
+                    int o = successors.get(i);
                     int id = entry(node, o);
                     boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
                     int kf = weight == 0 ? h : key(g + 1, h);

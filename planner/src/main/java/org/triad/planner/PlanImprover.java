@@ -18,7 +18,10 @@ package org.triad.planner;
  * <li>otherwise growing neighbourhoods for half of the remaining work where the smallest one
  *     helped, then restarts on h^add supporters (greedy, then weighted A* with weights 5, 3, 2,
  *     preferred operators) that only look for plans shorter than the best so far, until one finds
- *     none, and neighbourhoods again with what is left where either helped.</li>
+ *     none, and neighbourhoods again with what is left where either helped;</li>
+ * <li>with {@link #anytime}, after the last action elimination: LAMA's later iterations (lazy weighted
+ *     A* with FF and the landmark count, weights 5, 3, 2, 1, pruned at the best length) on work of
+ *     their own.</li>
  * </ol>
  * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
  * extra work (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
