@@ -79,6 +79,54 @@ class AnytimeIterationsTest {
         assertTrue(PlanValidator.validate(SOKOBAN, SOKOBAN_P07, pddl(task, with)).valid());
     }
 
+    /**
+     * The iterations stop where their work ends, not their time: beside a CPU load a search cut at a
+     * work bound has evaluated exactly the states it evaluates on an idle machine, and goes on to the
+     * same plan.
+     */
+    @Test
+    void aSearchCutByWorkStopsAtTheSameStateUnderCpuLoad() throws InterruptedException {
+        long[] idle = cutThenFinish();
+        java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
+        List<Thread> burners = new ArrayList<>();
+        for (int i = 0; i < 2 * Runtime.getRuntime().availableProcessors(); i++) {
+            Thread t = new Thread(() -> {
+                long x = 1;
+                while (!stop.get()) x = x * 6364136223846793005L + 1442695040888963407L;
+                if (x == 42) System.out.print("");
+            }, "cpu-load-" + i);
+            t.setDaemon(true);
+            t.start();
+            burners.add(t);
+        }
+        long[] loaded;
+        try {
+            loaded = cutThenFinish();
+        } finally {
+            stop.set(true);
+            for (Thread t : burners) t.join();
+        }
+        assertEquals(84, idle[2]);
+        assertEquals(java.util.Arrays.toString(idle), java.util.Arrays.toString(loaded));
+    }
+
+    /** Evaluations at the cut (20 M work units), evaluations at the plan, its length. */
+    private static long[] cutThenFinish() {
+        GroundedProblem.Query q = new GroundedProblem(SOKOBAN, SOKOBAN_P07).query(SOKOBAN_P07);
+        SearchTask task = q.task().relevantTo(q.goalPos(), q.goalNeg());
+        long deadline = deadline();
+        FfHeuristic h = new FfHeuristic(task);
+        Successors succ = new Successors(task);
+        WorkMeter meter = new WorkMeter(h, succ);
+        LazyGreedySearch.Run run = new LazyGreedySearch(h, new Landmarks(task, q.init(), q.goalPos(), deadline), succ, deadline)
+                .weighted(5, 89).start(q.init(), q.goalPos(), q.goalNeg());
+        BestFirstSearch.Result cut = run.resume(meter, meter.now() + 20_000_000, Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.LIMIT, cut.outcome());
+        BestFirstSearch.Result done = run.resume(meter, Long.MAX_VALUE, Long.MAX_VALUE);
+        assertEquals(BestFirstSearch.Outcome.FOUND, done.outcome());
+        return new long[] {cut.evaluated(), done.evaluated(), done.plan().length};
+    }
+
     private static PddlPlan pddl(SearchTask task, int[] plan) {
         List<PddlStep> steps = new ArrayList<>();
         for (int o : plan) steps.add(task.ops[o].toAction());
