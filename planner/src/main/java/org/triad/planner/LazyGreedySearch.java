@@ -13,6 +13,7 @@ import java.util.Arrays;
  * after 15,000 evaluations), so the plan improver, whose lazy search runs on those (the goal agenda's
  * logistics plans), leaves it out: see planner/BENCHMARK.md, sixth session. Complete with a closed
  * list; exhausting the queues proves the task unsolvable (dead ends are relaxed-unsolvable states).
+ * {@link #weighted} makes it LAMA's later iterations (lazy weighted A* below a length bound).
  */
 final class LazyGreedySearch {
     private final FfHeuristic heuristic;
@@ -20,6 +21,10 @@ final class LazyGreedySearch {
     private final Successors successors;
     private final long deadline;
     private final boolean landmarkQueueOverAll;
+    /** 0: greedy (keys are heuristic values); otherwise keys are g + weight * h, and a shorter path reopens a state. */
+    private int weight;
+    /** Paths of this many steps or more are pruned (only shorter plans are looked for). */
+    private int lengthBound = Integer.MAX_VALUE;
 
     private int[] entryParent = new int[1024];
     private int[] entryOp = new int[1024];
@@ -37,6 +42,18 @@ final class LazyGreedySearch {
         this.landmarks = landmarks;
         this.successors = successors;
         this.deadline = deadlineNanos;
+    }
+
+    /**
+     * Lazy weighted A* as in LAMA's later iterations: successors keyed by their g plus {@code weight}
+     * times their parent's heuristic values, a state reached again on a shorter path reopened (its
+     * values kept), and paths of {@code lengthBound} steps or more pruned, so a plan found is shorter.
+     */
+    LazyGreedySearch weighted(int weight, int lengthBound) {
+        if (weight < 1) throw new IllegalArgumentException("weight " + weight);
+        this.weight = weight;
+        this.lengthBound = lengthBound;
+        return this;
     }
 
     private int entry(int parent, int op) {
@@ -132,14 +149,26 @@ final class LazyGreedySearch {
                 int parent = entryParent[e];
                 int op = entryOp[e];
                 int[] state = parent < 0 ? init : successors.apply(space.state(parent), op);
-                if (space.find(state) >= 0) continue;
                 int g = parent < 0 ? 0 : space.g(parent) + 1;
-                int h = heuristic.evaluate(state, goalPos);
-                evaluated++;
-                int node = space.add(state, parent, op, g, h);
-                if (h == FfHeuristic.INFINITE) continue;
-                if (Successors.satisfies(state, goalPos, goalNeg)) {
-                    return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
+                if (g >= lengthBound) continue;
+                int node = space.find(state);
+                int h;
+                if (node >= 0) {
+                    // greedy: the first path stays; weighted: a shorter one reopens the state, values kept
+                    if (weight == 0 || g >= space.g(node)) continue;
+                    space.reparent(node, parent, op, g);
+                    h = space.h(node);
+                    if (h == FfHeuristic.INFINITE) continue;
+                    heuristic.evaluate(state, goalPos); // its helpful actions (counted as an evaluation)
+                    evaluated++;
+                } else {
+                    h = heuristic.evaluate(state, goalPos);
+                    evaluated++;
+                    node = space.add(state, parent, op, g, h);
+                    if (h == FfHeuristic.INFINITE) continue;
+                    if (Successors.satisfies(state, goalPos, goalNeg)) {
+                        return new BestFirstSearch.Result(BestFirstSearch.Outcome.FOUND, space.path(node), state, expanded, evaluated);
+                    }
                 }
                 expanded++;
                 if (initialFf < 0) initialFf = h;
@@ -172,13 +201,19 @@ final class LazyGreedySearch {
                     int o = successors.get(i);
                     int id = entry(node, o);
                     boolean preferred = Arrays.binarySearch(helpful, o) >= 0;
-                    queues[0].push(h, id);
-                    if (preferred) queues[1].push(h, id);
-                    if (preferred && nq > 2) queues[2].push(hl, id);
-                    if (nq == 4) queues[3].push(hl, id);
+                    int kf = weight == 0 ? h : key(g + 1, h);
+                    int kl = weight == 0 ? hl : key(g + 1, hl);
+                    queues[0].push(kf, id);
+                    if (preferred) queues[1].push(kf, id);
+                    if (preferred && nq > 2) queues[2].push(kl, id);
+                    if (nq == 4) queues[3].push(kl, id);
                 }
             }
             return new BestFirstSearch.Result(BestFirstSearch.Outcome.EXHAUSTED, null, null, expanded, evaluated);
+        }
+
+        private int key(int g, int h) {
+            return (int) Math.min(Integer.MAX_VALUE, g + (long) weight * h);
         }
     }
 }

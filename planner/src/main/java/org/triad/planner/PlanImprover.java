@@ -18,7 +18,10 @@ package org.triad.planner;
  * <li>otherwise growing neighbourhoods for half of the remaining work where the smallest one
  *     helped, then restarts on h^add supporters (greedy, then weighted A* with weights 5, 3, 2,
  *     preferred operators) that only look for plans shorter than the best so far, until one finds
- *     none, and neighbourhoods again with what is left where either helped.</li>
+ *     none, and neighbourhoods again with what is left where either helped;</li>
+ * <li>with {@link #anytime}, after the last action elimination: LAMA's later iterations (lazy weighted
+ *     A* with FF and the landmark count, weights 5, 3, 2, 1, pruned at the best length) on work of
+ *     their own.</li>
  * </ol>
  * Every step stops at the budget's end and is skipped once it has passed, so the budget bounds the
  * extra work (apart from one step's last heuristic evaluation). The steps use only {@link Successors}
@@ -91,6 +94,27 @@ final class PlanImprover {
         this.effort = effort;
     }
 
+    /** Weights of the lazy weighted A* iterations {@link #anytime} adds, as LAMA's after its first plan. */
+    static final int[] ANYTIME_WEIGHTS = {5, 3, 2, 1};
+    /** Work for {@link #anytime}'s iterations, besides the budget (0: none). */
+    private long anytimeWork;
+    /** Work the last {@link #improve}'s iterations used. */
+    private long anytimeUsed;
+
+    /**
+     * After the steps below, LAMA's later iterations get {@code work} more: lazy weighted A* with the FF
+     * heuristic and the landmark count (preferred operators, four queues) with weights 5, 3, 2, 1, each
+     * pruned at the best plan's length, until one finds nothing within the work. Where a greedy first
+     * plan is a local optimum the neighbourhoods cannot leave (sokoban-sat11 p07: 91 steps, 89 after
+     * the steps), it searches the whole space again below that length (w = 5: 84 after 29,244
+     * evaluations; Fast Downward's lama-first 77). The greedy plans' length depends on ties (sokoban's
+     * LAMA gives 83 to 117 steps over 13 operator orders): this is what makes the result depend on them less.
+     */
+    PlanImprover anytime(long work) {
+        anytimeWork = work;
+        return this;
+    }
+
     /** The shortest plan found, never longer than {@code plan} (a valid plan for the goal). */
     int[] improve(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy) {
         return improve(init, goalPos, goalNeg, plan, tryLazyGreedy, false);
@@ -107,7 +131,38 @@ final class PlanImprover {
         // (woodworking-sat11 p07: 84 -> 72 steps, Fast Downward 76). Only here, on the final plan: in
         // the steps above, a plan shortened this way changed which of them ran and how far (hiking
         // p2-3-7 47 -> 52); here it can only make the plan shorter
-        return shortest ? best : PlanShortener.shorten(task, successors, init, goalPos, goalNeg, best, true);
+        if (shortest) return best;
+        best = PlanShortener.shorten(task, successors, init, goalPos, goalNeg, best, true);
+        // after everything else, on work of its own: it can only make the plan shorter
+        return anytimeWork > 0 && !timedOut ? iterations(init, goalPos, goalNeg, best) : best;
+    }
+
+    /** Work the last {@link #improve} spent in {@link #anytime}'s iterations. */
+    long anytimeUsed() {
+        return anytimeUsed;
+    }
+
+    private int[] iterations(int[] init, int[] goalPos, int[] goalNeg, int[] best) {
+        long start = meter.now();
+        try {
+            return iterations(init, goalPos, goalNeg, best, start + anytimeWork);
+        } finally {
+            anytimeUsed = meter.now() - start;
+        }
+    }
+
+    private int[] iterations(int[] init, int[] goalPos, int[] goalNeg, int[] best, long until) {
+        Landmarks lms = new Landmarks(task, init, goalPos, deadline);
+        for (int w : ANYTIME_WEIGHTS) {
+            if (best.length <= 1 || System.nanoTime() >= deadline || meter.now() >= until) break;
+            BestFirstSearch.Result r = new LazyGreedySearch(heuristic, lms, successors, deadline).weighted(w, best.length)
+                    .start(init, goalPos, goalNeg).resume(meter, until, Long.MAX_VALUE);
+            count(r);
+            // exhausted: no plan shorter than the bound exists; otherwise the work or the time is spent
+            if (r.outcome() != BestFirstSearch.Outcome.FOUND) break;
+            best = shorter(best, PlanShortener.shorten(task, successors, init, goalPos, goalNeg, r.plan()));
+        }
+        return best;
     }
 
     private int[] steps(int[] init, int[] goalPos, int[] goalNeg, int[] plan, boolean tryLazyGreedy, boolean restartAnyway) {

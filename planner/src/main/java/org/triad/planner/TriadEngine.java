@@ -314,6 +314,7 @@ public final class TriadEngine implements PddlPlanner {
         if (plan == null) return SolveResult.timeout(stats(groundMs, searchStart, effort));
         if (portfolio != null && improvementCap <= 0) portfolio.release();
         boolean bestSoFar = false;
+        long anytimeUsed = 0;
         if (exact) {
             // a shortest plan: nothing to eliminate (and elimination is quadratic in its length:
             // a chain of 100,000 places)
@@ -332,6 +333,12 @@ public final class TriadEngine implements PddlPlanner {
             int goals = open.size();
             for (int g : q.goalNeg()) if (Arrays.binarySearch(q.init(), g) >= 0) goals++;
             long budget = improvementBudget(improvementCap, firstPlan, plan.length, goals, fromAgenda);
+            // a greedy plan of the portfolio: LAMA's later iterations get as much work again as the
+            // improvement (only a shorter plan replaces it, so no plan gets longer), where that is more
+            // than the first plan took: a search below its length explores more than the greedy one did
+            // (sokoban p07: 29,244 evaluations to 84 after 2,667 to 91), so with less it cannot end
+            // (rubiks-cube p07: its first plan took 431,318, and 300,000 below 129 found nothing)
+            long anytime = goals > 1 && (portfolio != null || compiledPlan != null) && budget >= firstPlan ? budget : 0;
             if (portfolio != null && goals <= 1) portfolio.release();
             if (portfolio != null && goals > 1) {
                 // the portfolio's other searches go on first, for as much work as it took to the plan
@@ -349,18 +356,20 @@ public final class TriadEngine implements PddlPlanner {
                 // goals, so the restarts would search blind (quantum-layout p07: 35 steps, 24 this way; Fast Downward 31)
                 NegativeGoalCompilation c = compiledPlan;
                 improver = new PlanImprover(c.task, new FfHeuristic(c.task), () -> new AdditiveFfHeuristic(c.task), new Successors(c.task),
-                        deadline, effort, evaluations, budget);
+                        deadline, effort, evaluations, budget).anytime(anytime);
                 improved = improver.improve(c.init, c.goalPos, new int[0], plan, fromAgenda, goals > 1 && !fromAgenda);
             } else {
-                improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget);
+                improver = new PlanImprover(task, h, () -> scratch.additive(task), succ, deadline, effort, evaluations, budget).anytime(anytime);
                 improved = improver.improve(q.init(), q.goalPos(), q.goalNeg(), plan, fromAgenda, goals > 1 && !fromAgenda);
             }
             if (compiledPlan == null || solves(succ, q, improved)) plan = improved;
+            // the cost search's budget below grows with the work so far (this meter's), not with the iterations'
+            if (compiledPlan == null) anytimeUsed = improver.anytimeUsed();
             bestSoFar = improver.timedOut();
         }
         if (minimizeCost && improvementCap > 0 && CostSearch.hasVaryingCosts(task)) {
             // (:metric minimize (total-cost)): the plan above is short; make it cheap, within a budget of work
-            long firstPlan = meter.now() - workAtStart + portfolioWork + GROUNDING_WORK_PER_OP * task.ops.length;
+            long firstPlan = meter.now() - workAtStart + portfolioWork - anytimeUsed + GROUNDING_WORK_PER_OP * task.ops.length;
             long budget = Math.min(improvementCap, Math.max(COST_MIN_WORK, IMPROVEMENT_WORK_FACTOR * firstPlan));
             CostSearch cheaper = new CostSearch(task, succ, deadline, budget);
             plan = cheaper.improve(q.init(), q.goalPos(), q.goalNeg(), plan);
