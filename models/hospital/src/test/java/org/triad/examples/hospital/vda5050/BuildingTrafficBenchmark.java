@@ -121,13 +121,16 @@ public final class BuildingTrafficBenchmark {
         Path dir = Files.createTempDirectory("traffic-benchmark");
         TrafficMap map = HospitalTraffic.map(new HospitalFloor());
         List<String> log = Collections.synchronizedList(new ArrayList<>());
+        long t0 = System.nanoTime();
+        // every line of master control and traffic control with the simulated second (at the building's pace) it came at
+        java.util.function.Consumer<String> timed = l -> log.add(String.format(Locale.ROOT, "%.1f s: %s", (System.nanoTime() - t0) / 1e9 * speed, l));
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
                 AgvProcess building = AgvProcess.building(broker.url(), n, speed, dir);
-                MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), log::add);
-                DeviceLink doorLink = DeviceLink.connect(broker.url(), "benchmark-doors", log::add);
-                DoorKeeper keeper = new DoorKeeper(doorLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, log::add)) {
+                MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), timed);
+                DeviceLink doorLink = DeviceLink.connect(broker.url(), "benchmark-doors", timed);
+                DoorKeeper keeper = new DoorKeeper(doorLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, timed)) {
             // the table runs on the wall clock: a courier may wait 120 simulated seconds at the building's pace
-            TrafficControl traffic = new TrafficControl(map, 120 / speed, log::add);
+            TrafficControl traffic = new TrafficControl(map, 120 / speed, timed);
             if (reserved) {
                 traffic.keepDoors(keeper).stepAside(true);
             }
@@ -206,6 +209,7 @@ public final class BuildingTrafficBenchmark {
                             }
                             lastProgress.put(agv.name(), System.nanoTime());
                             if (!ok) {
+                                timed.accept("failed: " + agv.lastFailure().orElse("?"));
                                 if (failed.incrementAndGet() <= 10) {
                                     System.err.println("failed: " + agv.lastFailure().orElse("?"));
                                 }
@@ -230,6 +234,7 @@ public final class BuildingTrafficBenchmark {
             Map<String, Long> nodeSince = new HashMap<>();
             double longestStill = 0;
             double lowestBattery = 100;
+            String longestStillOf = "";
             while (System.nanoTime() < end) {
                 Thread.sleep(200);
                 boolean moved = false;
@@ -242,13 +247,17 @@ public final class BuildingTrafficBenchmark {
                     if (changed || !busy.getOrDefault(a.name(), false)) {
                         nodeSince.put(a.name(), now);
                     }
-                    longestStill = Math.max(longestStill, (now - nodeSince.getOrDefault(a.name(), now)) / 1e9 * speed);
+                    double still = (now - nodeSince.getOrDefault(a.name(), now)) / 1e9 * speed;
+                    if (still > longestStill) {
+                        longestStill = still;
+                        longestStillOf = a.name() + " at " + node + " (" + phase.getOrDefault(a.name(), "?") + ")";
+                    }
                 }
                 if (moved || busy.values().stream().noneMatch(b -> b)) {
                     stillSince = System.nanoTime();
                 } else if ((System.nanoTime() - stillSince) / 1e9 * speed > STANDSTILL) {
                     standstills++;
-                    System.err.println("standstill (" + n + " robots, reserved " + reserved + "): " + traffic.waits());
+                    System.err.println("standstill (" + n + " robots, reserved " + reserved + ") at " + Math.round((now - t0) / 1e9 * speed) + " s: " + traffic.waits());
                     for (RemoteAgv a : agvs) {
                         if (busy.getOrDefault(a.name(), false)) {
                             System.err.println("  " + a.name() + ": " + phase.getOrDefault(a.name(), "?") + "; AGV " + a.state().map(s -> "at "
@@ -270,6 +279,7 @@ public final class BuildingTrafficBenchmark {
             building.stop();
             Files.write(dir.resolve("master.log"), new ArrayList<>(log));
             System.err.println("logs (building, master) in " + dir);
+            System.err.printf(Locale.ROOT, "longest still: %.0f s, %s%n", longestStill, longestStillOf);
             System.err.printf(Locale.ROOT, "dock: %d charges, %d times taken when asked (the leg first), lowest battery %.1f %%%n", charges.get(),
                     dockBusy.get(), lowestBattery);
             Matcher m = SIMULATED.matcher(building.output());
