@@ -491,7 +491,8 @@ public final class RemoteAgv implements FailureExplaining {
         }
         awaitAbandonedOrderEnded();
         String from = traffic.decisionPoint(name());
-        Optional<String> side = traffic.wayOut(name());
+        List<String> cycle = drive.refusal().map(r -> r.cycle()).orElseGet(() -> traffic.madeWayFor(name()));
+        Optional<String> side = traffic.wayOut(name(), cycle);
         if (side.isEmpty()) {
             // nowhere to go: one of the robots it would have waited for makes way instead
             Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));

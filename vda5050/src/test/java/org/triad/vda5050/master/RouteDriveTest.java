@@ -274,4 +274,25 @@ class RouteDriveTest {
         assertTrue(drive.trail(state("o1", "b", 2, false)), "the AGV reports b and stands: nothing more to report");
         assertEquals(List.of("b"), traffic.read(t -> t.base("A")), "a, behind it, is released");
     }
+
+    /**
+     * A robot refused head to head steps aside off the way the robots of its cycle wait for. The benchmark's west corridor:
+     * courier-8 at c4, courier-4 at c1 waiting for the lane c1-c4, which runs over c0 (one zone with it). Stepping aside
+     * to c0 left courier-8 in courier-4's way, where it was refused again and stepped back to c4: ten refusals in a row.
+     */
+    @Test
+    void aRobotRefusedHeadToHeadStepsAsideOffTheWayTheOthersWaitFor() {
+        TrafficMap west = TrafficMap.builder().node("c0").node("c1").node("c4").node("c5").node("c6").edge("c1", "c0").edge("c0", "c4").edge("c1", "c4")
+                .edge("c4", "c5").edge("c5", "c6").area(org.triad.building.traffic.Resource.Kind.ZONE, "passing-c0", 1, "c0", "c1-c4").build();
+        TrafficControl traffic = new TrafficControl(west, 600, l -> { });
+        assertTrue(traffic.place("A", "c1"));
+        assertTrue(traffic.place("B", "c4"));
+        assertTrue(traffic.place("C", "c5"));
+        assertFalse(traffic.request("A", List.of("c1", "c4")) instanceof Granted, "A waits for B's c4");
+        var refused = assertInstanceOf(org.triad.building.traffic.Decision.Refused.class, traffic.request("B", List.of("c4", "c1")));
+        assertEquals(Set.of("A", "B"), Set.copyOf(refused.cycle()));
+        assertEquals(java.util.Optional.of("c0"), traffic.wayOut("B"), "without the cycle: the first of the least wanted places, c0");
+        assertEquals(java.util.Optional.of("c5"), traffic.wayOut("B", refused.cycle()),
+                "c0 and the lane over it are what A waits for: B queues for c5 instead, off A's way");
+    }
 }
