@@ -178,14 +178,14 @@ public final class BuildingTrafficBenchmark {
                         for (int k = 0; k < stops.size(); k++) {
                             String stop = stops.get(k);
                             boolean charge = false;
-                            if (!onDock[0] && battery(agv) < RECHARGE_BELOW && !dock.tryAcquire()) {
+                            if (!onDock[0] && battery(agv) < RECHARGE_BELOW) {
+                                phase.put(agv.name(), "asks for the dock (waits for it in a room, at most the wait bound)");
+                            }
+                            if (!onDock[0] && battery(agv) < RECHARGE_BELOW && !dockFor(dock, agv, speed)) {
                                 dockBusy.incrementAndGet(); // the dock is another courier's: this leg first, the dock after it
                             } else if (!onDock[0] && battery(agv) < RECHARGE_BELOW) {
                                 // to the dock before the next leg: it is the lobby's waypoint, for one courier at a time (held
-                                // until this one has driven off it again). A courier never waits for it where it stands: that
-                                // wait is outside the reservation table, so a chain of couriers waiting in the table for the
-                                // one standing there, ending at the dock's holder driving to the dock behind them, was a cycle
-                                // that no rule saw (three of four standstills in a run, the longest 680 simulated s)
+                                // until this one has driven off it again)
                                 onDock[0] = true;
                                 stop = HospitalBuilding.DOCK;
                                 charge = true;
@@ -195,7 +195,7 @@ public final class BuildingTrafficBenchmark {
                             if (!from.equals(stop)) {
                                 List<String> path = path(map, from, stop);
                                 routes.incrementAndGet();
-                                phase.put(agv.name(), "drives " + path);
+                                phase.put(agv.name(), "drives " + path + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
                                 ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path)) : driveEdges(agv, path);
                             }
                             if (charge && ok) {
@@ -315,6 +315,29 @@ public final class BuildingTrafficBenchmark {
      * at the courier's 0.5 % per metre), and from there the dock as far again.
      */
     private static final double RECHARGE_BELOW = 60;
+
+    /**
+     * Whether the courier gets the dock: at once if it is free; else it waits for it only in a room (a dead end, where it
+     * stands in no corridor) and at most the table's wait bound, else goes on with its leg and asks again after it. The
+     * dock's queue is outside the reservation table: a courier waiting for it on the ring, unbounded as it was, closed
+     * cycles that no rule saw (couriers waiting in the table for the one standing there, ending at the dock's holder
+     * driving to the dock behind them: three of four standstills in a run, the longest 680 simulated s). Never waiting
+     * for it at all ran couriers flat (one at 0 % in c6's doorway, another run).
+     */
+    private static boolean dockFor(java.util.concurrent.Semaphore dock, RemoteAgv agv, double speed) {
+        if (dock.tryAcquire()) {
+            return true;
+        }
+        if (!DESTINATIONS.contains(where(agv))) {
+            return false;
+        }
+        try {
+            return dock.tryAcquire((long) (120 / speed * 1000), java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
+    }
 
     private static double battery(RemoteAgv agv) {
         return agv.state().map(s -> s.batteryState() == null ? 100.0 : s.batteryState().batteryCharge()).orElse(100.0);
