@@ -179,7 +179,7 @@ public final class BuildingTrafficBenchmark {
                             String stop = stops.get(k);
                             boolean charge = false;
                             if (!onDock[0] && battery(agv) < RECHARGE_BELOW) {
-                                phase.put(agv.name(), "asks for the dock (waits for it in a room, at most the wait bound)");
+                                phase.put(agv.name(), "asks for the dock (below " + MUST_CHARGE_BELOW + " % waits for it, at most the wait bound)");
                             }
                             if (!onDock[0] && battery(agv) < RECHARGE_BELOW && !dockFor(dock, agv, speed)) {
                                 dockBusy.incrementAndGet(); // the dock is another courier's: this leg first, the dock after it
@@ -315,20 +315,22 @@ public final class BuildingTrafficBenchmark {
      * at the courier's 0.5 % per metre), and from there the dock as far again.
      */
     private static final double RECHARGE_BELOW = 60;
+    /** Below this charge, percent, a courier waits for the dock (at most the wait bound) instead of doing its leg first. */
+    private static final double MUST_CHARGE_BELOW = 30;
 
     /**
-     * Whether the courier gets the dock: at once if it is free; else it waits for it only in a room (a dead end, where it
-     * stands in no corridor) and at most the table's wait bound, else goes on with its leg and asks again after it. The
+     * Whether the courier gets the dock: at once if it is free; else, above {@value #MUST_CHARGE_BELOW} %, it goes on with
+     * its leg and asks again after it; below, it waits for the dock where it stands, at most the table's wait bound. The
      * dock's queue is outside the reservation table: a courier waiting for it on the ring, unbounded as it was, closed
      * cycles that no rule saw (couriers waiting in the table for the one standing there, ending at the dock's holder
      * driving to the dock behind them: three of four standstills in a run, the longest 680 simulated s). Never waiting
-     * for it at all ran couriers flat (one at 0 % in c6's doorway, another run).
+     * for it ran couriers flat (0 % in c6's doorway); waiting only in rooms did too.
      */
     private static boolean dockFor(java.util.concurrent.Semaphore dock, RemoteAgv agv, double speed) {
         if (dock.tryAcquire()) {
             return true;
         }
-        if (!DESTINATIONS.contains(where(agv))) {
+        if (battery(agv) >= MUST_CHARGE_BELOW) {
             return false;
         }
         try {
