@@ -504,6 +504,15 @@ public final class ReservationTable {
         return robots.keySet();
     }
 
+    /**
+     * What the robot's waiting request needs beyond what it holds (its stretch's nodes, edges and areas), or nothing when
+     * it waits for nothing: the way a robot stepping aside for it must keep clear.
+     */
+    public Set<Resource> wanted(String robot) {
+        RobotState s = robot(robot);
+        return s.pending == null ? Set.of() : Set.copyOf(s.pending.needed);
+    }
+
     /** The robot's waiting request, if any, with its reason. */
     public Optional<Wait> waiting(String robot) {
         RobotState s = robot(robot);

@@ -415,7 +415,22 @@ public final class RemoteAgv implements FailureExplaining {
         screen.sent(drive.orderId()); // its states are progress of our order, not of a stranger's
         Optional<String> refused = drive.start();
         if (refused.isPresent()) {
-            traffic.stopAt(name(), route.get(0));
+            if (drive.endedAtDecisionPoint()) {
+                // its first stretch was sent: it drives to the decision point, and what it passes there is reported; the next
+                // order waits until it has ended there (once the AGV has taken it: a state of its last order says nothing)
+                await(() -> state != null && drive.orderId().equals(state.orderId()), timeouts.stateSeconds());
+                AgvState now;
+                synchronized (lock) {
+                    abandonedOrder = drive.orderId();
+                    trailing = drive;
+                    now = state;
+                }
+                if (now != null) {
+                    trail(now);
+                }
+            } else {
+                traffic.stopAt(name(), route.get(0));
+            }
             synchronized (lock) {
                 fail(call + " on AGV " + name() + " refused by traffic control: " + refused.get());
                 if (drive.deadlockAvoided()) {
@@ -476,7 +491,8 @@ public final class RemoteAgv implements FailureExplaining {
         }
         awaitAbandonedOrderEnded();
         String from = traffic.decisionPoint(name());
-        Optional<String> side = traffic.wayOut(name());
+        List<String> cycle = drive.refusal().map(r -> r.cycle()).orElseGet(() -> traffic.madeWayFor(name()));
+        Optional<String> side = traffic.wayOut(name(), cycle);
         if (side.isEmpty()) {
             // nowhere to go: one of the robots it would have waited for makes way instead
             Optional<String> other = drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));

@@ -124,7 +124,25 @@ final class RouteDrive {
             waiting = true;
         }
         send(0);
-        return waiting ? Optional.empty() : askAhead();
+        if (waiting) {
+            return Optional.empty();
+        }
+        Optional<String> ahead = askAhead();
+        if (ahead.isPresent()) {
+            // the order with its first stretch released is out: the AGV drives it whatever the call does, so the order is
+            // ended at the decision point and the base kept up to there, as for a refusal later on. Before, the caller cut
+            // the base back to the start node while the AGV drove on, stopped at the decision point waiting for an update
+            // that never came (its order never ended, every later order rejected as "still executing"), and the table gave
+            // its place to others: courier-8 stood at c1 for 400 simulated s, the map had it at c0, and courier-6, granted
+            // c1, was blocked by it there (the benchmark's longest standstill)
+            endHere(ahead.get(), deadlockAvoided());
+        }
+        return ahead;
+    }
+
+    /** Whether the drive ended at its decision point with its order sent (the AGV still drives there: see {@link #trail}). */
+    boolean endedAtDecisionPoint() {
+        return endedHere;
     }
 
     /** Called with each state of the AGV (and again every few milliseconds with the last one). */

@@ -102,6 +102,14 @@ public final class TrafficControl {
 
     /** Robots asked to make way for a refused robot that had nowhere to go (see {@link #askToMakeWay}). */
     private final java.util.Set<String> makingWay = new java.util.HashSet<>();
+    /** The cycle each robot asked to make way was asked for: it steps aside off their way (see {@link #wayOut(String, List)}). */
+    private final Map<String, List<String>> makingWayFor = new HashMap<>();
+
+    /** The robots the robot was last asked to make way for (once), or none. */
+    synchronized List<String> madeWayFor(String robot) {
+        List<String> c = makingWayFor.remove(robot);
+        return c == null ? List.of() : c;
+    }
 
     /**
      * A robot refused as a deadlock has no free neighbour to step aside to: the first other robot of the cycle that
@@ -111,8 +119,9 @@ public final class TrafficControl {
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
         for (String w : cycle) {
             // never a robot guiding a person: it would leave its person behind (see ReservationTable's guide case)
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w) && wayOut(w).isPresent()) {
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w) && wayOut(w, cycle).isPresent()) {
                 makingWay.add(w);
+                makingWayFor.put(w, List.copyOf(cycle));
                 log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
                 return Optional.of(w);
             }
@@ -156,11 +165,16 @@ public final class TrafficControl {
      * would all drive to its one waypoint).
      */
     synchronized Optional<String> aside(String robot) {
+        return aside(robot, List.of());
+    }
+
+    /** {@link #aside(String)} to a place off the way the given robots wait for (see {@link #wayOut(String, List)}). */
+    synchronized Optional<String> aside(String robot, List<String> outOfTheWayOf) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
             return Optional.empty();
         }
         String at = table.decisionPoint(robot);
-        for (String n : placesForOneNextTo(at)) {
+        for (String n : placesOffTheWay(robot, at, outOfTheWayOf)) {
             if (newOnStep(robot, at, n).stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && othersNeeding(r, robot) + 1 <= r.capacity())) {
                 return Optional.of(n);
             }
@@ -177,7 +191,18 @@ public final class TrafficControl {
      * {@code c1}, courier-3 in the storage room).
      */
     synchronized Optional<String> wayOut(String robot) {
-        Optional<String> free = aside(robot);
+        return wayOut(robot, List.of());
+    }
+
+    /**
+     * {@link #wayOut(String)} for a robot refused as a deadlock with the robots of its cycle: never to a place those robots
+     * wait to drive through. Before, a robot refused head to head in the west corridor (at c4, the other at c1 waiting for
+     * the lane c1-c4, which runs over c0) stepped aside to c0, still in the other's way, was refused there and stepped
+     * back to c4, and so on: ten refusals in a row for courier-8 in one benchmark run. With no place off their way, it
+     * has nowhere to go, and one of them is asked to make way ({@link #askToMakeWay}).
+     */
+    synchronized Optional<String> wayOut(String robot, List<String> outOfTheWayOf) {
+        Optional<String> free = aside(robot, outOfTheWayOf);
         if (free.isPresent() || !table.robots().contains(robot) || table.isLost(robot)) {
             return free;
         }
@@ -185,7 +210,7 @@ public final class TrafficControl {
         Map<String, java.util.Set<String>> waitsFor = table.waitsFor();
         String best = null;
         int fewest = Integer.MAX_VALUE;
-        for (String n : placesForOneNextTo(at)) {
+        for (String n : placesOffTheWay(robot, at, outOfTheWayOf)) {
             if (table.map().neighbours(n).equals(java.util.Set.of(at)) && !table.needing(table.map().node(n)).isEmpty()) {
                 continue; // a taken dead end off here: who is in it can only come out through where this robot stands
             }
@@ -200,6 +225,17 @@ public final class TrafficControl {
             }
         }
         return Optional.ofNullable(best);
+    }
+
+    /** {@link #placesForOneNextTo} but those the robots' waiting requests need (where standing, or the lane to it, would block them). */
+    private List<String> placesOffTheWay(String robot, String at, List<String> others) {
+        java.util.Set<Resource> way = new java.util.HashSet<>();
+        for (String o : others) {
+            if (!o.equals(robot) && table.robots().contains(o)) {
+                way.addAll(table.wanted(o));
+            }
+        }
+        return placesForOneNextTo(at).stream().filter(n -> table.map().standing(n).stream().noneMatch(way::contains)).toList();
     }
 
     /**

@@ -245,4 +245,54 @@ class RouteDriveTest {
         assertNull(guiding.onState(state("oG", "c1", 0, false)).failure(), "the guide is granted c4");
         assertEquals(List.of("c1", "c4"), traffic.read(t -> t.base("guide")));
     }
+
+    /**
+     * The benchmark's longest standstill: courier-8's first stretch (c0 -> c1) was granted and sent, the next one refused at
+     * once, and the call cut its base back to c0 while the AGV drove to c1 and stood there, its order waiting for an update
+     * that never came; c1 went to courier-6, which the AGV blocked there for 400 simulated s. A refusal right after the
+     * order went out now ends the order at the decision point, like a refusal later on, and the base stays up to there.
+     */
+    @Test
+    void aRefusalRightAfterTheFirstStretchWasSentEndsTheOrderAtTheDecisionPointAndKeepsTheBaseUpToThere() {
+        TrafficMap line = TrafficMap.builder().node("a").node("b").node("c").edge("a", "b").edge("b", "c").build();
+        TrafficControl traffic = new TrafficControl(line, 60, l -> { });
+        assertTrue(traffic.place("A", "a"));
+        traffic.read(t -> t.block(t.map().node("c"), "a bed stands there"));
+        List<Sent> orders = new ArrayList<>();
+        RouteDrive drive = new RouteDrive("A", List.of("a", "b", "c"), "o1", traffic, (id, u, n, e) -> orders.add(new Sent(id, u, n, e)),
+                why -> { });
+        String why = drive.start().orElseThrow();
+        assertTrue(why.contains("a bed stands there"), why);
+        assertEquals(2, orders.size(), "the order, then its update ending it at the decision point");
+        assertEquals(List.of("a", "b", "c"), orders.get(0).nodes().stream().map(Node::nodeId).toList());
+        assertTrue(orders.get(0).edges().get(0).released(), "a -> b was released to the AGV: it drives there");
+        assertEquals(1, orders.get(1).updateId());
+        assertEquals(List.of("b"), orders.get(1).nodes().stream().map(Node::nodeId).toList(), "the horizon deleted: the order ends at b");
+        assertTrue(drive.endedAtDecisionPoint());
+        assertEquals(List.of("a", "b"), traffic.read(t -> t.base("A")), "b stays A's: its AGV drives there");
+
+        assertTrue(drive.trail(state("o1", "b", 2, false)), "the AGV reports b and stands: nothing more to report");
+        assertEquals(List.of("b"), traffic.read(t -> t.base("A")), "a, behind it, is released");
+    }
+
+    /**
+     * A robot refused head to head steps aside off the way the robots of its cycle wait for. The benchmark's west corridor:
+     * courier-8 at c4, courier-4 at c1 waiting for the lane c1-c4, which runs over c0 (one zone with it). Stepping aside
+     * to c0 left courier-8 in courier-4's way, where it was refused again and stepped back to c4: ten refusals in a row.
+     */
+    @Test
+    void aRobotRefusedHeadToHeadStepsAsideOffTheWayTheOthersWaitFor() {
+        TrafficMap west = TrafficMap.builder().node("c0").node("c1").node("c4").node("c5").node("c6").edge("c1", "c0").edge("c0", "c4").edge("c1", "c4")
+                .edge("c4", "c5").edge("c5", "c6").area(org.triad.building.traffic.Resource.Kind.ZONE, "passing-c0", 1, "c0", "c1-c4").build();
+        TrafficControl traffic = new TrafficControl(west, 600, l -> { });
+        assertTrue(traffic.place("A", "c1"));
+        assertTrue(traffic.place("B", "c4"));
+        assertTrue(traffic.place("C", "c5"));
+        assertFalse(traffic.request("A", List.of("c1", "c4")) instanceof Granted, "A waits for B's c4");
+        var refused = assertInstanceOf(org.triad.building.traffic.Decision.Refused.class, traffic.request("B", List.of("c4", "c1")));
+        assertEquals(Set.of("A", "B"), Set.copyOf(refused.cycle()));
+        assertEquals(java.util.Optional.of("c0"), traffic.wayOut("B"), "without the cycle: the first of the least wanted places, c0");
+        assertEquals(java.util.Optional.of("c5"), traffic.wayOut("B", refused.cycle()),
+                "c0 and the lane over it are what A waits for: B queues for c5 instead, off A's way");
+    }
 }
