@@ -63,7 +63,12 @@ public final class NumericPlannerComparison {
         System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         int problems = 0, triadSolved = 0, othersSolved = 0, missed = 0, within = 0, compared = 0;
         List<Double> ratios = new ArrayList<>();
-        ExecutorService pool = Executors.newFixedThreadPool(parallel ? 3 : 1);
+        // daemon threads: a tool that fails (VAL missing) ends the run with its exception instead of leaving the JVM waiting
+        ExecutorService pool = Executors.newFixedThreadPool(parallel ? 3 : 1, r -> {
+            Thread t = new Thread(r, "planner");
+            t.setDaemon(true);
+            return t;
+        });
         for (int i = 4; i < args.size(); i += 2) {
             Path domain = Path.of(args.get(i)).toAbsolutePath();
             Path problem = Path.of(args.get(i + 1)).toAbsolutePath();
