@@ -17,7 +17,7 @@ cmake -S "$out/val" -B "$out/val/build" -DCMAKE_BUILD_TYPE=Release > "$out/val-c
 cmake --build "$out/val/build" -j2 > "$out/val-build.log"
 
 # Metric-FF 2.1: times.c redefines gettimeofday/times outside Windows, and two parser functions name
-# a parameter errno (a macro on glibc)
+# a parameter errno (a macro on glibc); times.c ends without a newline, so the #endif gets its own line
 rm -rf "$out/mff" && cp -r "$mff_src" "$out/mff"
 cd "$out/mff/v2.1"
 { echo '#ifdef _WIN32'; cat times.c; printf '\n#endif\n'; } > times.c.new && mv times.c.new times.c

@@ -64,7 +64,11 @@ final class SolveRun {
 		// the timeout holds while reading too: the files are parsed on a daemon thread that is left
 		// behind if it takes longer (the process ends right after)
 		java.util.concurrent.FutureTask<Object[]> parsing = new java.util.concurrent.FutureTask<>(
-				() -> new Object[] { PddlParser.parseDomain(domainFile), PddlParser.parseProblem(problemFile) });
+				() -> {
+					Domain d = PddlParser.parseDomain(domainFile);
+					// read against the domain: a numeric value the problem needs and can never have is a located error
+					return new Object[] { d, PddlParser.parseProblem(problemFile, d) };
+				});
 		Thread reader = new Thread(parsing, "triad-solve-parse");
 		reader.setDaemon(true);
 		reader.start();

@@ -125,6 +125,27 @@ class SolveCommandTest {
 	}
 
 	@Test
+	void aNumericFluentLeftUndefinedIsALocatedErrorWhereTheGoalNeedsItAndPddlsUndefinedValueElsewhere() throws IOException {
+		Path numeric = Path.of("..", "planner", "src", "test", "resources", "pddl", "numeric");
+		String domain = numeric.resolve("battery-domain.pddl").toString();
+		String far = Files.readString(numeric.resolve("battery-problem.pddl"));
+		Path noCapacity = dir.resolve("no-capacity.pddl");
+		Files.writeString(noCapacity, far.replace("(= (capacity r1) 100)", "").replace("(:goal (and", "(:goal (and (> (capacity r1) 0)"));
+		Run goal = TriadCliTest.run("solve", domain, noCapacity.toString());
+		assertEquals(2, goal.exit(), goal.err());
+		assertEquals("error: " + noCapacity + ":9:18: the goal reads (capacity r1), which :init gives no value and no action assigns,"
+				+ " so it could never hold; give it one with (= (capacity r1) NUMBER)", goal.err().strip());
+
+		// one road without a length: its instances of drive do not apply (PDDL 2.1), and the answer says so
+		Path noRoad = dir.resolve("no-road.pddl");
+		Files.writeString(noRoad, far.replace("(= (distance c2 ward) 20)", ""));
+		Run road = TriadCliTest.run("solve", domain, noRoad.toString());
+		assertEquals(1, road.exit(), road.err());
+		assertTrue(road.err().contains("(distance c2 ward) has no value in :init (and no action assigns it), so 1 instance of 'drive' that read it never apply"),
+				road.err());
+	}
+
+	@Test
 	void anUnwritablePlanFileIsAnErrorWithItsCause() throws IOException {
 		Path notAFolder = dir.resolve("file");
 		Files.writeString(notAFolder, "x");

@@ -36,6 +36,13 @@ import org.triad.planner.pddl.Problem;
 public final class NumericPlannerComparison {
     private record Outcome(boolean solved, double seconds, List<String> steps, String val, String valMetric, String replay, double cost) { }
 
+    /**
+     * Triad's JVM as {@code ./triad solve} starts it (the launcher's flags for a process that plans once:
+     * the serial collector and the C1 compiler only, which on settlersnumeric p2 saves a third of the CPU
+     * the C2 compiler spends), so that the table times what a user runs.
+     */
+    static final List<String> TRIAD_JVM = List.of("-Xmx2g", "-XX:+UseSerialGC", "-XX:-UsePerfData", "-XX:TieredStopAtLevel=1");
+
     public static void main(String[] argv) throws Exception {
         List<String> args = new ArrayList<>(List.of(argv));
         boolean parallel = args.remove("--parallel");
@@ -52,11 +59,16 @@ public final class NumericPlannerComparison {
         System.out.printf("Java %s, %d cores, load average at start %.1f, cap %.0f s per planner and problem%s%n%n",
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(), timeout, parallel ? ", the three planners side by side" : "");
-        System.out.println("| problem | metric | Triad s | Triad cost | Triad VAL | Metric-FF s | Metric-FF cost | Metric-FF VAL | ENHSP s | ENHSP cost | ENHSP VAL | ratio |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
+        System.out.println("| problem | metric | Triad s | Triad CPU s | Triad cost | Triad VAL | Metric-FF s | Metric-FF cost | Metric-FF VAL | ENHSP s | ENHSP cost | ENHSP VAL | ratio | load |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         int problems = 0, triadSolved = 0, othersSolved = 0, missed = 0, within = 0, compared = 0;
         List<Double> ratios = new ArrayList<>();
-        ExecutorService pool = Executors.newFixedThreadPool(parallel ? 3 : 1);
+        // daemon threads: a tool that fails (VAL missing) ends the run with its exception instead of leaving the JVM waiting
+        ExecutorService pool = Executors.newFixedThreadPool(parallel ? 3 : 1, r -> {
+            Thread t = new Thread(r, "planner");
+            t.setDaemon(true);
+            return t;
+        });
         for (int i = 4; i < args.size(); i += 2) {
             Path domain = Path.of(args.get(i)).toAbsolutePath();
             Path problem = Path.of(args.get(i + 1)).toAbsolutePath();
@@ -69,9 +81,11 @@ public final class NumericPlannerComparison {
             Files.writeString(ffDomain, Files.readString(domain).replaceAll("(?i):numeric-fluents", ":fluents"));
             Future<Outcome> triad = pool.submit(() -> {
                 Path plan = work.resolve("triad-" + n + ".plan");
-                return outcome(List.of(java, "-Xmx2g", "-cp", System.getProperty("java.class.path"), SolveOnce.class.getName(), domain.toString(),
-                        problem.toString(), plan.toString(), Double.toString(timeout)), timeout + 30, work.resolve("triad-" + n + ".out"), plan, null,
-                        domain, problem, d, p, metric, validate, work);
+                List<String> cmd = new ArrayList<>(List.of(java));
+                cmd.addAll(TRIAD_JVM);
+                cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), SolveOnce.class.getName(), domain.toString(), problem.toString(),
+                        plan.toString(), Double.toString(timeout)));
+                return outcome(cmd, timeout + 30, work.resolve("triad-" + n + ".out"), plan, null, domain, problem, d, p, metric, validate, work);
             });
             Future<Outcome> mff = ff == null ? null : pool.submit(() -> {
                 List<String> cmd = new ArrayList<>(List.of(ff.toString(), "-o", ffDomain.toString(), "-f", problem.toString()));
@@ -109,9 +123,9 @@ public final class NumericPlannerComparison {
                     ratio = String.format(Locale.ROOT, "%.2f", r);
                 }
             }
-            System.out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |%n", label, metric == null ? "length" : metric,
-                    seconds(t), cost(t), t.solved ? t.val : "-", seconds(m), cost(m), m != null && m.solved ? m.val : "-", seconds(e), cost(e),
-                    e != null && e.solved ? e.val : "-", ratio);
+            System.out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f |%n", label, metric == null ? "length" : metric,
+                    seconds(t), cpu(work.resolve("triad-" + i + ".plan.cpu")), cost(t), t.solved ? t.val : "-", seconds(m), cost(m), m != null && m.solved ? m.val : "-", seconds(e), cost(e),
+                    e != null && e.solved ? e.val : "-", ratio, ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         }
         pool.shutdown();
         ratios.sort(null);
@@ -122,6 +136,15 @@ public final class NumericPlannerComparison {
 
     private static String seconds(Outcome o) {
         return o == null ? "-" : String.format(Locale.ROOT, "%.2f", o.seconds);
+    }
+
+    /** The CPU seconds {@link SolveOnce} wrote for its whole JVM, or "-" when it was killed at the cap before writing them. */
+    private static String cpu(Path file) {
+        try {
+            return Files.exists(file) ? String.format(Locale.ROOT, "%.2f", Double.parseDouble(Files.readString(file).trim())) : "-";
+        } catch (java.io.IOException | NumberFormatException e) {
+            return "-";
+        }
     }
 
     private static String cost(Outcome o) {

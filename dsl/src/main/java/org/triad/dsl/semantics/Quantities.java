@@ -56,6 +56,11 @@ public final class Quantities {
 		return quantities.contains(p);
 	}
 
+	/** Whether the models compute with an attribute ({@code i.weight} in arithmetic, a cost or a comparison with a quantity). */
+	public boolean isQuantity(org.triad.dsl.triad.Attribute a) {
+		return quantities.contains(a);
+	}
+
 	/** Whether a numeric expression reads a quantity (directly or through arithmetic). */
 	public boolean readsQuantity(Expression e) {
 		return leaves(e).stream().anyMatch(l -> quantities.contains(read(l)));

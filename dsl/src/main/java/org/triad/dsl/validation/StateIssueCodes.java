@@ -21,4 +21,9 @@ public final class StateIssueCodes {
 	public static final String ATTRIBUTE_VALUE = "state.attribute-value";
 	/** A situation that extends itself, directly or through others ({@code state A extends B}, {@code state B extends A}). */
 	public static final String EXTENDS_CYCLE = "state.extends-cycle";
+	/**
+	 * A quantity without arguments that a situation (with the ones it extends) gives no value, or an object
+	 * without a value for an attribute the models compute with: every action that reads it could never apply.
+	 */
+	public static final String UNDEFINED_QUANTITY = "state.undefined-quantity";
 }

@@ -140,6 +140,65 @@ public class TriadStateValidator extends AbstractTriadStateValidator {
 		}
 	}
 
+	/**
+	 * A number the planner computes with is a numeric fluent, and one without a value makes every action
+	 * that reads it inapplicable, silently (PDDL 2.1's undefined value): the goal is then unreachable "even
+	 * when nothing is ever deleted", which names no cause. A quantity without arguments (a battery, a
+	 * payload limit) has one value per situation, so leaving it out is a mistake; one with arguments (a
+	 * distance between two places) is stated for the pairs it exists for only, so it is not checked.
+	 */
+	@Check
+	public void checkQuantitiesStated(Situation s) {
+		if (s.eResource() == null || s.eResource().getResourceSet() == null || SituationLineage.extendsItself(s)) {
+			return;
+		}
+		org.triad.dsl.semantics.Quantities quantities = org.triad.dsl.semantics.Quantities.of(s);
+		Set<String> stated = new HashSet<>();
+		for (Situation ancestor : SituationLineage.lineage(s)) {
+			for (Expression fact : ancestor.getFacts()) {
+				if (fact instanceof BinaryExpression b && b.getOperator() == BinaryOperator.EQ && b.getLeft() instanceof PropertyCall c
+						&& c.getArguments().isEmpty() && c.getActor() != null && !c.getActor().eIsProxy()) {
+					stated.add(c.getActor().getName() + "." + c.getProperty().getName());
+				}
+			}
+		}
+		for (org.eclipse.emf.ecore.resource.Resource r : List.copyOf(s.eResource().getResourceSet().getResources())) {
+			for (org.eclipse.emf.ecore.EObject root : r.getContents()) {
+				if (!(root instanceof org.triad.dsl.triad.ActorModel m) || m.getActor() == null) {
+					continue;
+				}
+				for (org.triad.dsl.triad.Property p : m.getActor().getProperties()) {
+					String name = m.getActor().getName() + "." + p.getName();
+					if (p.getParameters().isEmpty() && quantities.isQuantity(p) && !stated.contains(name)) {
+						error("state '" + s.getName() + "' gives no value to " + name + "(), a number the models compute with, so no action that"
+								+ " reads it could ever apply; state it, e.g. '" + name + "() == ...;'", s, P.getNamedElement_Name(),
+								StateIssueCodes.UNDEFINED_QUANTITY);
+					}
+				}
+			}
+		}
+		for (ObjectDeclaration d : s.getDeclarations()) {
+			if (d.getType() == null || d.getType().eIsProxy()) {
+				continue;
+			}
+			for (SituationObject o : d.getObjects()) {
+				Set<String> given = new HashSet<>();
+				o.getAssignments().forEach(a -> given.add(a.getAttribute() == null || a.getAttribute().eIsProxy() ? "" : a.getAttribute().getName()));
+				Set<org.triad.dsl.triad.DomainClass> seen = new HashSet<>(); // cd.cyclic-inheritance is reported elsewhere
+				for (org.triad.dsl.triad.DomainClass c = d.getType(); c != null && !c.eIsProxy() && seen.add(c); c = c.getSuperType()) {
+					for (org.triad.dsl.triad.Attribute a : c.getAttributes()) {
+						if (quantities.isQuantity(a) && !given.contains(a.getName())) {
+							error(d.getType().getName() + " " + o.getName() + " has no " + a.getName() + ", an attribute of " + c.getName()
+									+ " the models compute with, so no action that reads it could ever apply; give it one, e.g. '"
+									+ d.getType().getName() + " " + o.getName() + " { " + a.getName() + " = ...; };'", o, P.getNamedElement_Name(),
+									StateIssueCodes.UNDEFINED_QUANTITY);
+						}
+					}
+				}
+			}
+		}
+	}
+
 	private static String text(Expression e) {
 		return NodeModelUtils.getTokenText(NodeModelUtils.findActualNodeFor(e)).replaceAll("\\s+", "");
 	}

@@ -29,6 +29,23 @@ public final class PddlParser {
         return new PddlParser(source).problem(SExpr.read(text, source));
     }
 
+    /**
+     * A problem read against its domain: also a located error where the problem needs a numeric value it
+     * can never have ({@link UndefinedFluents}: the goal or metric reads a fluent that has no value and no
+     * action assigns, or an action reads a function that has no value for any arguments).
+     */
+    public static Problem parseProblem(String text, String source, Domain domain) {
+        SExpr root = SExpr.read(text, source);
+        Problem problem = new PddlParser(source).problem(root);
+        UndefinedFluents.check(domain, problem, root, source);
+        return problem;
+    }
+
+    /** {@link #parseProblem(String, String, Domain)} of a file. */
+    public static Problem parseProblem(Path file, Domain domain) throws IOException {
+        return parseProblem(Files.readString(file), file.toString(), domain);
+    }
+
     /** A metric's text, {@code minimize (total-cost)} (what {@link Problem#metric()} holds); a bad one is a located error. */
     static PlanMetric parseMetric(String text, String source) {
         SExpr e = SExpr.read("(" + text + ")", source);

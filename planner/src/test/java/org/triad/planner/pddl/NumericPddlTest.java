@@ -65,4 +65,33 @@ class NumericPddlTest {
         Domain d = PddlParser.parseDomain("(define (domain d) (:requirements :numeric-fluents :fluents) (:predicates (p)))", "d.pddl");
         assertEquals(List.of(":numeric-fluents", ":fluents"), d.requirements());
     }
+
+    private static final String BATTERY = "(define (domain b) (:requirements :typing :fluents) (:types r place) (:predicates (at ?r - r ?p - place))\n"
+            + " (:functions (battery ?r - r) (distance ?a ?b - place) (capacity ?r - r) (travelled))\n"
+            + " (:action drive :parameters (?r - r ?a ?b - place) :precondition (and (at ?r ?a) (>= (battery ?r) (distance ?a ?b)))\n"
+            + "  :effect (and (not (at ?r ?a)) (at ?r ?b) (decrease (battery ?r) (distance ?a ?b)) (increase (travelled) (distance ?a ?b)))))";
+
+    private static Problem problem(String init, String goal, String metric) {
+        return PddlParser.parseProblem("(define (problem p) (:domain b) (:objects r1 - r x y - place)\n (:init (at r1 x) " + init + ")\n (:goal "
+                + goal + ")" + (metric.isEmpty() ? "" : "\n (:metric " + metric + ")") + ")", "p.pddl", PddlParser.parseDomain(BATTERY, "b.pddl"));
+    }
+
+    @Test
+    void aGoalOrMetricThatReadsAFluentWithoutValueIsALocatedError() {
+        // no value in :init and no action assigns one: the goal can never hold, the metric never be computed
+        assertEquals("p.pddl:3:27: the goal reads (capacity r1), which :init gives no value and no action assigns, so it could never hold;"
+                + " give it one with (= (capacity r1) NUMBER)", assertThrows(PddlParseException.class,
+                () -> problem("(= (battery r1) 10) (= (distance x y) 4)", "(and (at r1 y) (> (capacity r1) 0))", "")).getMessage());
+        assertEquals("p.pddl:4:23: the metric reads (travelled), which :init gives no value and no action assigns, so no plan has a value;"
+                + " give it one with (= (travelled) NUMBER)", assertThrows(PddlParseException.class,
+                () -> problem("(= (battery r1) 10) (= (distance x y) 4)", "(at r1 y)", "minimize (+ (travelled) 1)")).getMessage());
+    }
+
+    @Test
+    void aFluentWithoutValueThatOnlyActionsReadIsPddlsUndefinedValueNotAnError() {
+        // PDDL 2.1: the instances that read it do not apply (IPC problems leave out the roads that are not there)
+        assertEquals(1, problem("(= (battery r1) 10) (= (travelled) 0)", "(at r1 y)", "minimize (travelled)").numericInit().size() - 1);
+        // total-cost and total-time start at 0; a value the goal reads is given; a quantified term is the engine's to ground
+        problem("(= (battery r1) 10) (= (capacity r1) 5)", "(and (> (capacity r1) 1) (forall (?p - place) (< (distance ?p ?p) 9)))", "minimize (total-cost)");
+    }
 }

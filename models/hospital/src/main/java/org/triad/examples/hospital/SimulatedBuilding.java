@@ -67,8 +67,16 @@ public final class SimulatedBuilding implements IWorld, org.triad.runtime.app.Fa
         return routeLength(floor, a.name(), b.name());
     }
 
-    /** The length of the model edge's route between two model waypoints, metres (the straight line if there is no edge). */
+    /**
+     * The length of the model edge's route between two model waypoints, metres (the straight line if there is no edge);
+     * between two landings of one lift, what the courier drives of a ride: into the cabin at a, out of it at b.
+     */
     public static double routeLength(HospitalFloor floor, String a, String b) {
+        Optional<HospitalFloor.LiftLanding> from = HospitalFloor.liftLandingAt(a);
+        Optional<HospitalFloor.LiftLanding> to = HospitalFloor.liftLandingAt(b);
+        if (from.isPresent() && to.isPresent() && from.get().lift().equals(to.get().lift()) && from.get().floor() != to.get().floor()) {
+            return routeLength(floor, a, from.get().cabin()) + routeLength(floor, to.get().cabin(), b);
+        }
         List<String> route = floor.route(a, b).orElse(List.of(a, b));
         double metres = 0;
         for (int k = 1; k < route.size(); k++) {
