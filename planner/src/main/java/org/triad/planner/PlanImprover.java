@@ -107,8 +107,9 @@ final class PlanImprover {
      * pruned at the best plan's length, until one finds nothing within the work. Where a greedy first
      * plan is a local optimum the neighbourhoods cannot leave (sokoban-sat11 p07: 91 steps, 89 after
      * the steps), it searches the whole space again below that length (w = 5: 84 after 29,244
-     * evaluations; Fast Downward's lama-first 77). The greedy plans' length depends on ties (sokoban's
-     * LAMA gives 83 to 117 steps over 13 operator orders): this is what makes the result depend on them less.
+     * evaluations; Fast Downward's lama-first 77). The greedy plans' length depends on which of equal
+     * supporters the FF heuristic takes (sokoban's LAMA gives 83 to 117 steps over 13 operator orders):
+     * this makes the result depend on them less.
      */
     PlanImprover anytime(long work) {
         anytimeWork = work;
