@@ -101,6 +101,16 @@ public class TriadCommonValidator extends AbstractTriadCommonValidator {
 		}
 	}
 
+	/** A decimal beyond a double's range reads as infinity, which no battery or distance is: refused as arithmetic that overflows. */
+	@Check
+	public void checkDecimal(org.triad.dsl.triad.DecimalLiteral d) {
+		if (Double.isInfinite(d.getValue())) {
+			String text = sourceText(d);
+			error("'" + (text.length() > 24 ? text.substring(0, 20) + "..." : text) + "' (" + text.indexOf('.') + " digits before the point) is too large"
+					+ " for a double (at most about 1.8E308)", d, P.getDecimalLiteral_Value(), CommonIssueCodes.OVERFLOW);
+		}
+	}
+
 	/** {@code -x} negates a number; a literal's negation is checked like other arithmetic on literals. */
 	@Check
 	public void checkNegation(org.triad.dsl.triad.NegationExpression e) {

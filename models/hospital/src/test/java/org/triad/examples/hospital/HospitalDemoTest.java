@@ -29,13 +29,15 @@ class HospitalDemoTest {
 		assertTrue(lines.stream().anyMatch(l -> l.contains("robot: moveAlong[c2, c3] failed DOOR_CLOSED")), out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("replanning Delivered(gauze, ward1) (1 of 3)")), out::toString);
 		assertTrue(lines.contains("gauze is now in ward1"), out::toString);
-		// the gauze's round leaves the courier below 60 %: it charges at the dock before the long trip upstairs
-		assertTrue(lines.stream().anyMatch(l -> l.contains("then Recharge(lobby): the battery is at")), out::toString);
+		// the gauze's round (round the closed fire door) leaves too little for the trip upstairs with its reserve: the plan
+		// itself charges at the dock on the way, and the courier gets there with the battery the models said
+		assertTrue(lines.stream().anyMatch(l -> l.contains("plan for Delivered(insulin, ward4): ") && l.contains("Courier.recharge(lobby)")),
+				out::toString);
 		assertTrue(lines.stream().anyMatch(l -> l.contains("action Building.ride(lift, c7, d1) succeeded")), out::toString);
-		// the cabin carries the courier between floors: the battery pays only for driving in and out (the models' ride drains nothing)
+		// the cabin carries the courier between floors: the battery pays for driving in and out, 5.6 m at 0.5 % a metre, as the models' ride drains
 		double before = battery(lines, "Building.ride(lift, c7, d1) started");
 		double after = battery(lines, "action Building.ride(lift, c7, d1) succeeded");
-		assertTrue(before - after < 3, before + " % before the ride, " + after + " % after it");
+		assertEquals(2.8, before - after, 0.2, before + " % before the ride, " + after + " % after it");
 		assertTrue(lines.stream().anyMatch(l -> l.startsWith("Completed: insulin is now in ward4")), out::toString);
 		assertTrue(lines.contains("Pictures written to " + dir.toAbsolutePath().normalize() + ":"), out::toString);
 		for (String picture : List.of("delivery.png", "delivery.gif", "delivery.html")) {
