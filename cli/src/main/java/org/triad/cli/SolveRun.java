@@ -104,7 +104,8 @@ final class SolveRun {
 		SolveResult r = engine.solve(domain, problem, Duration.ofNanos(left));
 		switch (r.status()) {
 			case SOLVED: {
-				String text = r.plan().toPddl();
+				java.util.OptionalDouble metric = org.triad.planner.PlanValidator.metricValue(domain, problem, r.plan());
+				String text = metric.isPresent() ? r.plan().toPddl(metric.getAsDouble()) : r.plan().toPddl();
 				out.print(text);
 				out.flush();
 				if (seed != null) {

@@ -32,6 +32,19 @@ class SolveCommandTest {
 		assertEquals(run.out(), Files.readString(plan));
 	}
 
+	/** A problem with a {@code :metric} is planned for it, and the cost line states the metric's value, not the steps. */
+	@Test
+	void theCostLineOfAProblemWithAMetricIsTheMetricsValue() {
+		Path roads = Path.of("..", "planner", "src", "test", "resources", "pddl", "metric");
+		Run run = TriadCliTest.run("solve", roads.resolve("roads-domain.pddl").toString(), roads.resolve("roads-route.pddl").toString(),
+				"--timeout", "20");
+		assertEquals(0, run.exit(), run.err());
+		List<String> lines = run.out().lines().toList();
+		// the corridor: three roads of 10 m, not the direct road of 50 m
+		assertEquals(List.of("(move lobby c1)", "(move c1 c2)", "(move c2 ward)"), lines.subList(0, lines.size() - 1));
+		assertEquals("; cost = 30 (metric)", lines.get(lines.size() - 1));
+	}
+
 	@Test
 	void helpNamesEveryOption() {
 		Run run = TriadCliTest.run("solve", "--help");
