@@ -43,8 +43,8 @@ final class FirstPlanPortfolio {
      * The fifth configuration joins in the fourth round (its first slice eight times the first): a
      * problem the other four solve within three rounds keeps their plan and their work. In the first
      * round it found pipesworld-tankage p17 a 94-step plan that no improvement shortened (the four, in
-     * the fourth round, 108 steps, improved to 92), and recharging-robots p07 (35 steps after 65 s of CPU)
-     * timed out at 300 s; rubik's cube's four have not found a plan by then (their first plan took
+     * the fourth round, 108 steps, improved to 92), and recharging-robots p07 (35 steps, 98 s of CPU)
+     * had no plan within 300 s at a load of 11; rubik's cube's four have not found a plan by then (their first plan took
      * 1,916 M work units), and the fifth finds its 95 steps at 2,108 M in all.
      */
     static final long FIFTH_FROM_SLICE = FIRST_SLICE_WORK << 3;
