@@ -12,6 +12,7 @@ class FfHeuristic {
     static final int INFINITE = Integer.MAX_VALUE;
 
     private final RelaxedOps t;
+    private final boolean lastAchiever;
     /** The relaxed plan's extraction, shared with {@link AdditiveFfHeuristic}. */
     final RelaxedPlanExtraction extraction;
     private final int[] level;
@@ -36,6 +37,16 @@ class FfHeuristic {
     long work;
 
     FfHeuristic(SearchTask task) {
+        this(task, false);
+    }
+
+    /**
+     * With {@code lastAchiever}, of the achievers that reach a fact at its level the one met last is
+     * its supporter (the relaxed plan then runs through the preconditions reached last, the side Fast
+     * Downward's last-in first-out h^add exploration takes), otherwise the first one met.
+     */
+    FfHeuristic(SearchTask task, boolean lastAchiever) {
+        this.lastAchiever = lastAchiever;
         this.t = task.relaxed;
         int nf = t.size;
         int no = t.count;
@@ -132,6 +143,8 @@ class FfHeuristic {
                             supporter[a] = o;
                             queue[tail++] = a;
                             if (goalMark[a] == -epoch) missing--;
+                        } else if (lastAchiever && level[a] == lf + 1) {
+                            supporter[a] = o;
                         }
                     }
                 }
