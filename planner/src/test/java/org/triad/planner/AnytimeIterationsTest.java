@@ -87,24 +87,9 @@ class AnytimeIterationsTest {
     @Test
     void aSearchCutByWorkStopsAtTheSameStateUnderCpuLoad() throws InterruptedException {
         long[] idle = cutThenFinish();
-        java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
-        List<Thread> burners = new ArrayList<>();
-        for (int i = 0; i < 2 * Runtime.getRuntime().availableProcessors(); i++) {
-            Thread t = new Thread(() -> {
-                long x = 1;
-                while (!stop.get()) x = x * 6364136223846793005L + 1442695040888963407L;
-                if (x == 42) System.out.print("");
-            }, "cpu-load-" + i);
-            t.setDaemon(true);
-            t.start();
-            burners.add(t);
-        }
         long[] loaded;
-        try {
+        try (CpuLoad load = CpuLoad.start()) {
             loaded = cutThenFinish();
-        } finally {
-            stop.set(true);
-            for (Thread t : burners) t.join();
         }
         assertEquals(84, idle[2]);
         assertEquals(java.util.Arrays.toString(idle), java.util.Arrays.toString(loaded));

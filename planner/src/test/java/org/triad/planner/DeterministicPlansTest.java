@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
 import org.triad.planner.pddl.Domain;
 import org.triad.planner.pddl.Problem;
@@ -41,24 +40,8 @@ class DeterministicPlansTest {
     private static void assertSamePlanUnderLoad(Domain d, Problem p, int loadedRuns) throws InterruptedException {
         String idle = solve(d, p);
         List<String> loaded = new ArrayList<>();
-        AtomicBoolean stop = new AtomicBoolean();
-        List<Thread> burners = new ArrayList<>();
-        int threads = 2 * Runtime.getRuntime().availableProcessors();
-        for (int i = 0; i < threads; i++) {
-            Thread t = new Thread(() -> {
-                long x = 1;
-                while (!stop.get()) x = x * 6364136223846793005L + 1442695040888963407L;
-                if (x == 42) System.out.print("");
-            }, "cpu-load-" + i);
-            t.setDaemon(true);
-            t.start();
-            burners.add(t);
-        }
-        try {
+        try (CpuLoad load = CpuLoad.start()) {
             for (int i = 0; i < loadedRuns; i++) loaded.add(solve(d, p));
-        } finally {
-            stop.set(true);
-            for (Thread t : burners) t.join();
         }
         for (String plan : loaded) assertEquals(idle, plan, p.name() + ": a loaded run's plan differs from the idle run's");
     }
