@@ -31,6 +31,7 @@ final class NumericRelaxedPlan {
     private static final int MAX_SUBGOALS = 5_000;
 
     private final NumericTask task;
+    private final boolean undoersLast;
     private final NumericHeuristic graph;
     private final int[] opLayer;
     private final int[] goalLayer;
@@ -55,6 +56,12 @@ final class NumericRelaxedPlan {
     private record Subgoal(NumericTask.Cond cond, int by) { }
 
     NumericRelaxedPlan(NumericTask task, NumericHeuristic graph) {
+        this(task, graph, false);
+    }
+
+    /** @param undoersLast whether an achiever that moves back what its consumer moves supports a shortfall nothing else meets */
+    NumericRelaxedPlan(NumericTask task, NumericHeuristic graph, boolean undoersLast) {
+        this.undoersLast = undoersLast;
         this.task = task;
         this.graph = graph;
         int no = task.ops.size();
@@ -157,7 +164,7 @@ final class NumericRelaxedPlan {
         double now = form.constant;
         for (int i = 0; i < form.vars.length; i++) {
             double c = form.coefs[i];
-            now += c * values[form.vars[i]] + (c > 0 ? c * gain[form.vars[i]] : 0);
+            now += c * known(form.vars[i], values) + (c > 0 ? c * gain[form.vars[i]] : 0);
         }
         if (Double.isNaN(now)) return;
         // an operator repeated k times must find what it consumes k times
@@ -180,10 +187,45 @@ final class NumericRelaxedPlan {
                 bestDelta = d;
             }
         }
+        if (best < 0 && undoersLast && by >= 0) {
+            // every achiever moves back what the consumer moves (a cart unloads what only loading puts on it):
+            // one not yet in the relaxed plan still supports it, so the shortfall is not silently dropped; each
+            // operator enters this way at most once, which ends a cycle of shortfalls
+            for (int o : form.changers) {
+                if (o == by || count[o] > 0 || opLayer[o] < 0 || task.leftOut != null && task.leftOut[o]) continue;
+                double d = delta(o, form, values, false);
+                if (d <= 1e-12) continue;
+                if (best < 0 || opLayer[o] < opLayer[best] || opLayer[o] == opLayer[best] && d > bestDelta) {
+                    best = o;
+                    bestDelta = d;
+                }
+            }
+        }
         if (best < 0) return;
         double times = need / bestDelta;
         int k = (int) Math.min(10_000, Math.max(1, form.strict && times == Math.floor(times) ? times + 1 : Math.ceil(times - 1e-9)));
         choose(best, k, values, open);
+    }
+
+    /**
+     * A fluent's value in the state; with {@code undoersLast}, an undefined one counts as the least constant
+     * that a reached operator assigns it (a cart's load is 0 once the cart is built), so that a comparison of it
+     * still asks for its achievers rather than being dropped.
+     */
+    private double known(int fluent, double[] values) {
+        double v = values[fluent];
+        if (!Double.isNaN(v) || !undoersLast) return v;
+        for (int o : changing[fluent]) {
+            if (opLayer[o] < 0) continue;
+            for (NumericTask.Effects e : task.ops.get(o).effects()) {
+                for (NumericTask.NumEffect n : e.numeric()) {
+                    if (n.fluent() != fluent || !n.kind().equals("assign")) continue;
+                    double a = NumericTask.value(n.value(), values);
+                    if (Double.isFinite(a) && !(a >= v)) v = a;
+                }
+            }
+        }
+        return v;
     }
 
     /**

@@ -62,6 +62,8 @@ final class NumericSearch {
     static final int ADDITIVE_WEIGHT = 2;
     /** Relaxed-plan evaluations the enforced hill-climbing for a goal of numbers only may spend before the greedy search takes over. */
     static final long HILL_CLIMB_EVALUATIONS = 50_000;
+    /** Evaluations of the greedy search, when the goal has facts, before the enforced hill-climbing with every operator as its fallback is tried. */
+    static final long GREEDY_BEFORE_CLIMB_EVALUATIONS = 100_000;
     /** The same for a problem without a metric, whose plan's length is improved. */
     static final long LENGTH_FACTOR = 2;
     static final long LENGTH_MIN_EVALUATIONS = 2_000;
@@ -202,9 +204,27 @@ final class NumericSearch {
             // a goal of numbers only: the layer estimate stays flat while one unit at a time is added, and the greedy
             // search gets lost on its plateaus (IPC pathwaysmetric p2); Metric-FF's enforced hill-climbing on its
             // relaxed plan with helpful actions goes through them
-            Run climb = hillClimb(task, new NumericRelaxedPlan(task, h), init, evaluations[0] + HILL_CLIMB_EVALUATIONS, deadline, evaluations);
+            Run climb = hillClimb(task, new NumericRelaxedPlan(task, h), init, evaluations[0] + HILL_CLIMB_EVALUATIONS, deadline, evaluations, false);
             expanded += climb.expanded;
             if (climb.outcome == Outcome.FOUND) first = climb;
+        }
+        if (first == null && h.goalHasFacts()) {
+            // the greedy search below on a budget first; where it runs out, the enforced hill-climbing with Metric-FF's
+            // fallback to every operator: IPC 2002 settlers p1, whose goal mixes facts with a number fed by long chains
+            // of resources, is solved by it (the greedy search finds nothing in 400 s); where it also fails the greedy
+            // search starts afresh with the work counter as before, so every plan it found before is found again
+            long before = evaluations[0];
+            Run greedy = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET,
+                    before + GREEDY_BEFORE_CLIMB_EVALUATIONS, deadline, evaluations, cache, Long.MAX_VALUE, 0);
+            expanded += greedy.expanded;
+            if (greedy.outcome != Outcome.LIMIT) {
+                first = greedy;
+            } else {
+                Run climb = hillClimb(task, new NumericRelaxedPlan(task, h, true), init, evaluations[0] + HILL_CLIMB_EVALUATIONS, deadline, evaluations, true);
+                expanded += climb.expanded;
+                if (climb.outcome == Outcome.FOUND || climb.outcome == Outcome.TIMEOUT) first = climb;
+                else evaluations[0] = before;
+            }
         }
         if (first == null) {
             first = search(task, h, dominance, init, h0, 0, Double.POSITIVE_INFINITY, false, false, false, EXPANSION_BUDGET, Long.MAX_VALUE, deadline, evaluations, cache,
@@ -291,8 +311,9 @@ final class NumericSearch {
      * run. Gives up ({@link Outcome#LIMIT}) when a breadth-first search finds no better state or the budget
      * ends; the caller then searches as before.
      */
-    private static Run hillClimb(NumericTask task, NumericRelaxedPlan rp, Key init, long maxEvaluations, long deadline, long[] evaluations) {
+    private static Run hillClimb(NumericTask task, NumericRelaxedPlan rp, Key init, long maxEvaluations, long deadline, long[] evaluations, boolean full) {
         Run run = new Run();
+        OpIndex all = full ? OpIndex.of(task) : null;
         List<Node> nodes = run.nodes;
         List<int[]> helpful = new ArrayList<>();
         int hCur = rp.evaluate(init.facts, init.values);
@@ -337,6 +358,39 @@ final class NumericSearch {
                         break;
                     }
                     queue.add(nodes.size() - 1);
+                }
+            }
+            if (better < 0 && full) {
+                // Metric-FF's "pruning stopped": the same breadth-first search over every operator
+                queue.clear();
+                seen.clear();
+                queue.add(current);
+                seen.add(nodes.get(current).state);
+                while (!queue.isEmpty() && better < 0) {
+                    int id = queue.poll();
+                    Node n = nodes.get(id);
+                    if (System.nanoTime() > deadline) {
+                        run.outcome = Outcome.TIMEOUT;
+                        return run;
+                    }
+                    run.expanded++;
+                    for (int o : all.candidates(n.state.facts)) {
+                        Key next = run.successor(task, o, n.state);
+                        if (next == null) continue;
+                        if (!seen.add(next)) continue;
+                        if (evaluations[0] >= maxEvaluations) return run;
+                        int hv = rp.evaluate(next.facts, next.values);
+                        evaluations[0]++;
+                        if (hv == NumericHeuristic.DEAD_END) continue;
+                        nodes.add(new Node(next, id, o, n.g + 1, hv, hv, nodes.size()));
+                        helpful.add(rp.helpful());
+                        if (hv < hCur || holds(task.goal, next)) {
+                            better = nodes.size() - 1;
+                            hCur = hv;
+                            break;
+                        }
+                        queue.add(nodes.size() - 1);
+                    }
                 }
             }
             if (better < 0) return run; // a dead end for the helpful actions: the caller's search takes over
