@@ -308,8 +308,9 @@ final class NumericSearch {
      * Enforced hill-climbing (Hoffmann's FF and Metric-FF): from the current state, breadth-first over the
      * successors by helpful actions of the {@link NumericRelaxedPlan} until a state with a shorter relaxed
      * plan, which becomes the current one; operators in ascending order, so the plan is the same on every
-     * run. Gives up ({@link Outcome#LIMIT}) when a breadth-first search finds no better state or the budget
-     * ends; the caller then searches as before.
+     * run. With {@code full}, a breadth-first search that finds no better state is repeated over every
+     * operator (Metric-FF's "pruning stopped"). Gives up ({@link Outcome#LIMIT}) when that finds none either
+     * or the budget ends; the caller then searches as before.
      */
     private static Run hillClimb(NumericTask task, NumericRelaxedPlan rp, Key init, long maxEvaluations, long deadline, long[] evaluations, boolean full) {
         Run run = new Run();
