@@ -330,73 +330,58 @@ final class NumericSearch {
                 run.goal = current;
                 return run;
             }
-            java.util.ArrayDeque<Integer> queue = new java.util.ArrayDeque<>();
-            java.util.Set<Key> seen = new java.util.HashSet<>();
-            queue.add(current);
-            seen.add(nodes.get(current).state);
-            int better = -1;
-            while (!queue.isEmpty() && better < 0) {
-                int id = queue.poll();
-                Node n = nodes.get(id);
-                if (System.nanoTime() > deadline) {
-                    run.outcome = Outcome.TIMEOUT;
-                    return run;
-                }
-                run.expanded++;
-                for (int o : helpful.get(id)) {
-                    Key next = run.successor(task, o, n.state);
-                    if (next == null) continue;
-                    if (!seen.add(next)) continue;
-                    if (evaluations[0] >= maxEvaluations) return run;
-                    int hv = rp.evaluate(next.facts, next.values);
-                    evaluations[0]++;
-                    if (hv == NumericHeuristic.DEAD_END) continue;
-                    nodes.add(new Node(next, id, o, n.g + 1, hv, hv, nodes.size()));
-                    helpful.add(rp.helpful());
-                    if (hv < hCur || holds(task.goal, next)) {
-                        better = nodes.size() - 1;
-                        hCur = hv;
-                        break;
-                    }
-                    queue.add(nodes.size() - 1);
-                }
-            }
+            int better = breadthFirst(task, rp, run, helpful, current, helpful::get, maxEvaluations, deadline, evaluations);
+            if (better == STOPPED) return run;
             if (better < 0 && full) {
                 // Metric-FF's "pruning stopped": the same breadth-first search over every operator
-                queue.clear();
-                seen.clear();
-                queue.add(current);
-                seen.add(nodes.get(current).state);
-                while (!queue.isEmpty() && better < 0) {
-                    int id = queue.poll();
-                    Node n = nodes.get(id);
-                    if (System.nanoTime() > deadline) {
-                        run.outcome = Outcome.TIMEOUT;
-                        return run;
-                    }
-                    run.expanded++;
-                    for (int o : all.candidates(n.state.facts)) {
-                        Key next = run.successor(task, o, n.state);
-                        if (next == null) continue;
-                        if (!seen.add(next)) continue;
-                        if (evaluations[0] >= maxEvaluations) return run;
-                        int hv = rp.evaluate(next.facts, next.values);
-                        evaluations[0]++;
-                        if (hv == NumericHeuristic.DEAD_END) continue;
-                        nodes.add(new Node(next, id, o, n.g + 1, hv, hv, nodes.size()));
-                        helpful.add(rp.helpful());
-                        if (hv < hCur || holds(task.goal, next)) {
-                            better = nodes.size() - 1;
-                            hCur = hv;
-                            break;
-                        }
-                        queue.add(nodes.size() - 1);
-                    }
-                }
+                better = breadthFirst(task, rp, run, helpful, current, id -> all.candidates(run.nodes.get(id).state.facts), maxEvaluations, deadline,
+                        evaluations);
+                if (better == STOPPED) return run;
             }
             if (better < 0) return run; // a dead end for the helpful actions: the caller's search takes over
             current = better;
         }
+    }
+
+    /** {@link #breadthFirst}'s answer when the run ended (its outcome says why: the deadline, or the evaluations' budget). */
+    private static final int STOPPED = -2;
+
+    /**
+     * One step of the enforced hill-climbing: breadth-first from node {@code current} over the operators
+     * {@code operators} gives each node, until a state with a shorter relaxed plan than the current one's, or
+     * a goal state; returns its node, -1 when there is none, or {@link #STOPPED}.
+     */
+    private static int breadthFirst(NumericTask task, NumericRelaxedPlan rp, Run run, List<int[]> helpful, int current,
+                                    java.util.function.IntFunction<int[]> operators, long maxEvaluations, long deadline, long[] evaluations) {
+        List<Node> nodes = run.nodes;
+        int hCur = nodes.get(current).h();
+        java.util.ArrayDeque<Integer> queue = new java.util.ArrayDeque<>();
+        java.util.Set<Key> seen = new java.util.HashSet<>();
+        queue.add(current);
+        seen.add(nodes.get(current).state);
+        while (!queue.isEmpty()) {
+            int id = queue.poll();
+            Node n = nodes.get(id);
+            if (System.nanoTime() > deadline) {
+                run.outcome = Outcome.TIMEOUT;
+                return STOPPED;
+            }
+            run.expanded++;
+            for (int o : operators.apply(id)) {
+                Key next = run.successor(task, o, n.state);
+                if (next == null) continue;
+                if (!seen.add(next)) continue;
+                if (evaluations[0] >= maxEvaluations) return STOPPED;
+                int hv = rp.evaluate(next.facts, next.values);
+                evaluations[0]++;
+                if (hv == NumericHeuristic.DEAD_END) continue;
+                nodes.add(new Node(next, id, o, n.g + 1, hv, hv, nodes.size()));
+                helpful.add(rp.helpful());
+                if (hv < hCur || holds(task.goal, next)) return nodes.size() - 1;
+                queue.add(nodes.size() - 1);
+            }
+        }
+        return -1;
     }
 
     /**
