@@ -21,15 +21,17 @@ import org.triad.sim.Vec2;
  * many couriers, each with its own {@code IRobot}/{@code IWorld} implementation ({@link Courier}) over the shared
  * world. An item one courier picked up is gone for the others; couriers meet in the corridors and block each
  * other. Each courier has a {@link org.triad.sim.Battery} ({@link HospitalObjects#courierBattery()}: 0.5 % of a full
- * charge per metre driven, the models' {@code Courier.drain()}) that charges at the dock {@value #DOCK} (500 W). The first courier starts at the lobby's waypoint (as {@link HospitalSimulation}'s), the others park
- * in one row along the walls of the lobby (17 spots, each with a clear way out: see {@link #LOBBY_SPOTS}), then in two
- * columns along the walls of ward 3, ward 2, storage, x-ray and ward 1 (24 spots a room), one room after the other in turn.
+ * charge per metre driven, the models' {@code Courier.drain()}) that charges at the lobby's dock (500 W; the models'
+ * dock {@value #DOCK}, on the spot {@link LobbyParking#DOCK} off the way out). A courier alone starts at the lobby's
+ * waypoint, as {@link HospitalSimulation}'s; of several, the first starts on the dock, the
+ * next 16 on the lobby's parking spots ({@link LobbyParking}, each with a clear way out), then in two columns along the
+ * walls of ward 3, ward 2, storage, x-ray and ward 1 (24 spots a room), one room after the other in turn.
  *
  * <p>Script the building ({@code sim().at(40).closeDoor(...)}) before {@link #start(double)}; afterwards the clock
  * steps it and everything goes through {@link SimulationClock#call} or the couriers' blocking actions.
  */
 public final class HospitalBuilding {
-    /** The charging dock, at the lobby's waypoint: a courier standing still there charges its battery. */
+    /** The models' waypoint of the charging dock: the dock stands in the lobby at {@link LobbyParking#DOCK}, where a courier standing still charges. */
     public static final String DOCK = "lobby";
     /** Rooms whose walls the couriers park along, in order of filling. */
     static final List<String> PARKING = List.of("lobby", "ward3", "ward2", "storage", "xray", "ward1");
@@ -59,7 +61,7 @@ public final class HospitalBuilding {
         floor.equip(sim);
         HospitalFloor.PEOPLE.forEach((name, at) -> sim.addPerson(name, at,
                 PersonSpec.defaults().withMaxSpeed(HospitalFloor.WALKING_SPEED.get(name))));
-        sim.addDock(DOCK, floor.plan().waypoint(DOCK).position());
+        sim.addDock(DOCK, LobbyParking.places().get(LobbyParking.DOCK));
         Whereabouts whereabouts = new Whereabouts(floor);
         List<Vec2> spots = parkingSpots(floor);
         int spot = 0;
@@ -68,10 +70,8 @@ public final class HospitalBuilding {
             if (couriers.containsKey(name)) {
                 throw new IllegalArgumentException("duplicate courier '" + name + "'");
             }
-            Robot robot = null;
-            if (i == 0) {
-                robot = sim.addRobot(name, HospitalFloor.ROBOT_START, HospitalObjects.courierSpec());
-            }
+            // a courier alone starts at the lobby's waypoint, as HospitalSimulation's (in nobody's way)
+            Robot robot = names.size() == 1 ? sim.addRobot(name, HospitalFloor.ROBOT_START, HospitalObjects.courierSpec()) : null;
             while (robot == null) {
                 if (spot >= spots.size()) {
                     throw new IllegalArgumentException("the hospital has room for " + i + " couriers, not " + names.size());
@@ -90,22 +90,11 @@ public final class HospitalBuilding {
     }
 
     /**
-     * The lobby's parking spots (m), one row along its walls: the straight way from each to the lobby's waypoint (where a
-     * courier leaving drives first, then out through the door) passes every other spot, Alice (at 5.6, 2.0) and the way
-     * from the waypoint out through the door at least 0.68 m off, centre to centre (two couriers of radius 0.3 m touch
-     * at 0.6), so a courier leaving never brushes one parked. Found by a randomized greedy search over the walls (0.4 m
-     * off them, 1.2 m or more from the waypoint); {@code HospitalBuildingParkingTest} checks the property. The way out
-     * through the door is kept {@value #WAY_OUT_CLEARANCE} m clear: two spots 0.7 and 0.8 m either side of it (19 spots
-     * before) let a courier through on the map but not past the simulator's avoidance, and at 20 couriers every one
-     * leaving stuck between them, backed off into the lobby and was touched by the next one leaving (135 contacts, no task done).
+     * Where the couriers start, in order: the lobby's dock and parking spots ({@link LobbyParking}; 19 spots along its
+     * walls before session 10, two of them 0.7 and 0.8 m either side of the way out, let a courier through on the map but
+     * not past the simulator's avoidance: at 20 couriers every one leaving stuck between them, 135 contacts, no task done).
      */
-    /** How far every lobby spot stands off the way from the lobby's waypoint out through its door (m, centre to the line). */
-    static final double WAY_OUT_CLEARANCE = 1.0;
-
-    static final List<Vec2> LOBBY_SPOTS = List.of(new Vec2(0.40, 1.85), new Vec2(0.40, 0.90), new Vec2(1.15, 0.40), new Vec2(2.30, 0.40),
-            new Vec2(3.20, 0.40), new Vec2(4.15, 0.40), new Vec2(4.90, 0.40), new Vec2(5.85, 0.40), new Vec2(7.60, 3.25), new Vec2(7.60, 4.15),
-            new Vec2(6.70, 4.60), new Vec2(5.55, 4.60), new Vec2(2.20, 4.60), new Vec2(0.95, 4.60),
-            new Vec2(0.40, 4.10), new Vec2(0.40, 3.35), new Vec2(0.40, 2.60));
+    static final List<Vec2> LOBBY_SPOTS = List.copyOf(LobbyParking.places().values());
 
     /**
      * The lobby's spots, then two columns along each side wall of the other parking rooms, 0.8 m apart, clear of the

@@ -121,6 +121,12 @@ public final class HospitalFloor {
                     .edge(r.name() + "Entry", r.corridorWaypoint());
         }
         b.item("gauze", 3.4, 18.5).item("syringe", 4.6, 18.5).item("bandage", 4.0, 18.8);
+        // the lobby's parking spots and dock, each a leaf off the lobby's waypoint (a route through a leaf is never shorter,
+        // so nobody's way is planned through a parked courier)
+        LobbyParking.places().forEach((place, at) -> {
+            b.waypoint(place, at.x(), at.y());
+            route(b, place, LobbyParking.HALL);
+        });
         route(b, "c1", "c2");
         route(b, "c2", "c3");
         route(b, "c4", "c5");

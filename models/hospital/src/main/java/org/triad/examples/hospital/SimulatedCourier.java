@@ -74,7 +74,8 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
             log.refused(sim.time(), call, "there is no charging dock at " + w + "; docks: " + sim.docks().keySet());
             return false;
         }
-        if (dock.distance(robot.position()) > Simulation.DOCK_RANGE && !record(robot.moveTo(w.name())).success()) {
+        // the dock may stand beside the waypoint (the lobby's, on a parking spot off the way out): onto its own waypoint
+        if (dock.distance(robot.position()) > Simulation.DOCK_RANGE && !record(robot.moveTo(floor.plan().nearestWaypoint(dock).name())).success()) {
             return false;
         }
         Battery battery = robot.battery();
@@ -90,6 +91,29 @@ public final class SimulatedCourier implements IRobot, org.triad.runtime.app.Fai
             return false;
         }
         return true;
+    }
+
+    /**
+     * Drives the lane between a lobby's parking spot (or its dock) and the lobby's waypoint ({@link LobbyParking}): a place
+     * finer than the models' waypoints, driven as master control's traffic map has it. False (logged) when blocked.
+     */
+    public boolean park(String from, String to) {
+        String call = "park(" + from + ", " + to + ")";
+        Optional<List<String>> route = floor.route(from, to);
+        if (route.isEmpty() || !LobbyParking.isPlace(from) && !LobbyParking.isPlace(to)) {
+            log.refused(sim.time(), call, "no lane of the lobby's parking from " + from + " to " + to);
+            return false;
+        }
+        if (!loc().name().equals(LobbyParking.HALL)) {
+            log.refused(sim.time(), call, "the robot is at " + loc() + ", not in the lobby");
+            return false;
+        }
+        return record(robot.moveAlong(route.get())).success();
+    }
+
+    /** Drives straight back to a parking lane's start after the lane was blocked; false (logged) when that is blocked too. */
+    public boolean parkBack(String from) {
+        return record(robot.moveAlong(List.of(from))).success();
     }
 
     /** Picks the item; first gets within reach of it if it lies further away than the robot's reach. */

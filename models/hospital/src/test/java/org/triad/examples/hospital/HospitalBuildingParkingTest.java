@@ -21,7 +21,7 @@ class HospitalBuildingParkingTest {
         List<Vec2> spots = HospitalBuilding.LOBBY_SPOTS;
         for (Vec2 s : spots) {
             assertEquals("lobby", floor.waypointAt(s), s + " lies in the lobby");
-            assertTrue(distanceToSegment(s, waypoint, c4) >= HospitalBuilding.WAY_OUT_CLEARANCE, s + " stands 1 m off the way out through the door");
+            assertTrue(distanceToSegment(s, waypoint, c4) >= LobbyParking.WAY_OUT_CLEARANCE, s + " stands 1 m off the way out through the door");
             assertTrue(distanceToSegment(HospitalFloor.PEOPLE.get("alice"), s, waypoint) >= CLEARANCE, "Alice stands off the way from " + s);
             for (Vec2 other : spots) {
                 if (other != s) {
@@ -32,23 +32,38 @@ class HospitalBuildingParkingTest {
     }
 
     @Test
-    void twentyCouriersStartEighteenInTheLobbyTheFirstOnTheDockThenOneEachInWard3AndWard2() {
+    void twentyCouriersStartSeventeenInTheLobbyTheFirstOnTheDockThenOneEachInWard3Ward2AndStorage() {
         List<String> names = new ArrayList<>();
         for (int i = 1; i <= 20; i++) {
             names.add("courier-" + i);
         }
         HospitalBuilding building = new HospitalBuilding(1, false, names);
         assertEquals(17, HospitalBuilding.LOBBY_SPOTS.size());
+        List<String> places = List.copyOf(LobbyParking.places().keySet());
+        assertEquals(LobbyParking.DOCK, places.get(0));
         for (int i = 0; i < names.size(); i++) {
             Vec2 at = building.sim().robot(names.get(i)).position();
-            String room = i <= 17 ? "lobby" : i == 18 ? "ward3" : "ward2";
+            String room = i < 17 ? "lobby" : List.of("ward3", "ward2", "storage").get(i - 17);
             assertEquals(room, building.floor().waypointAt(at), names.get(i) + " starts in " + room);
-            if (i <= 17) {
-                Vec2 expected = i == 0 ? building.floor().plan().waypoint("lobby").position() : HospitalBuilding.LOBBY_SPOTS.get(i - 1);
-                assertTrue(at.distance(expected) < 0.05, names.get(i) + " at " + at + ", not " + expected);
+            if (i < 17) {
+                assertEquals(java.util.Optional.of(places.get(i)), LobbyParking.placeAt(at), names.get(i) + " at " + at + " stands on " + places.get(i));
             }
         }
+        // the dock is where the building charges: courier-1 on it charges, courier-2 on a spot does not
+        assertTrue(building.sim().docks().get(HospitalBuilding.DOCK).distance(building.sim().robot("courier-1").position()) < 0.05);
         assertTrue(building.sim().contacts().isEmpty(), "nobody touches at the start: " + building.sim().contacts());
+    }
+
+    @Test
+    void theWayFromTheDockAndEverySpotToTheLobbysWaypointIsALaneOfTheFloorAndNoShortcutForAnyoneElse() {
+        HospitalFloor floor = new HospitalFloor();
+        for (String place : LobbyParking.places().keySet()) {
+            assertEquals(java.util.Optional.of(List.of(place, "lobby")), floor.route(place, "lobby"), place);
+            assertEquals("lobby", LobbyParking.waypointOf(place));
+        }
+        // a leaf never shortens a way: the planner's routes between the models' waypoints do not pass a spot
+        assertEquals(java.util.Optional.of(List.of("lobby", "c4")), floor.route("lobby", "c4"));
+        assertEquals("c4", LobbyParking.waypointOf("c4"));
     }
 
     private static double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {

@@ -8,6 +8,8 @@ import java.util.TreeMap;
 
 import org.triad.building.BuildingContext;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.LobbyParking;
+import org.triad.examples.hospital.vda5050.LobbyRoutes;
 import org.triad.examples.hospital.vda5050.HospitalTraffic;
 import org.triad.examples.hospital.vda5050.VdaHospital;
 import org.triad.refarc.ActionRunner;
@@ -265,8 +267,20 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
             if (node == null || !traffic.read(t -> t.map().hasNode(node))) {
                 return Optional.of("it reports node '" + node + "', which is not on the hospital's traffic map");
             }
-            return traffic.place(agv.name(), node) ? Optional.empty()
-                    : Optional.of("its node '" + node + "' is full on the traffic map (" + traffic.read(t -> t.map().node(node).capacity()) + " robots)");
+            if (!traffic.place(agv.name(), node)) {
+                return Optional.of("its node '" + node + "' is full on the traffic map (" + traffic.read(t -> t.map().node(node).capacity()) + " robots)");
+            }
+            if (node.equals(LobbyParking.HALL)) {
+                // it joins on the lobby's centre, everyone's way in and out (a courier alone in its building starts there; one
+                // may have stopped there): it parks on a free spot first, a reserved drive, so the next one can join and leave
+                LobbyRoutes.of(traffic).freeSpot(agv.name()).ifPresent(spot -> {
+                    if (!agv.driveRoute(List.of(LobbyParking.HALL, spot), traffic)) {
+                        System.err.println("triad serve: " + agv.serialNumber() + " joined on the lobby's centre and could not park on "
+                                + spot + ": " + agv.lastFailure().orElse("?"));
+                    }
+                });
+            }
+            return Optional.empty();
         }
 
         synchronized List<FleetRobot> handOver(Runnable closeAll) {

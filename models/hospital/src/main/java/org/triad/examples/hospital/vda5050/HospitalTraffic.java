@@ -9,14 +9,15 @@ import java.util.Optional;
 import org.triad.building.traffic.Resource.Kind;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.LobbyParking;
 import org.triad.sim.FloorPlan;
 import org.triad.sim.Room;
 import org.triad.sim.Vec2;
 
 /**
  * The hospital's floor map as traffic control sees it, derived from {@link HospitalFloor}: a node per model
- * waypoint (corridor waypoints and rooms one robot, the lobby {@value #ROOM}, as the couriers start parked along
- * its walls), an edge per model edge (one lane), a door area (one robot) per door an edge passes
+ * waypoint (corridor waypoints and rooms one robot; the lobby's waypoint is its hall's centre, passed by everyone, and
+ * each of its parking spots and its dock is a node of its own joined to it by a lane: see {@link #LOBBY_HALL}), an edge per model edge (one lane), a door area (one robot) per door an edge passes
  * through, a corridor area (one robot) per corridor that an edge's route runs through round corners
  * (the side corridors: nobody can pass a robot there, nor wait in it), and the lift: an edge between its landings
  * (c7 and d1, the ride, driven with the edge action {@code ride}) in a lift area over it, the cabins and the passages
@@ -29,10 +30,12 @@ public final class HospitalTraffic {
      */
     public static final int JUNCTION = 1;
     /**
-     * Robots the lobby holds at once: the couriers start parked along its walls. Every other room holds one: a
-     * courier ends its move on the room's waypoint, so a second one sent there is stopped by the first.
+     * The lobby's hall: its centre (the models' waypoint {@code lobby}, which every courier passes on its way in and out)
+     * and the lanes from it to the parking spots and the dock ({@link LobbyParking}), one robot at a time, nobody waiting
+     * in it; the spots and the dock are stop nodes for one robot each. Every other room holds one robot: a courier ends
+     * its move on the room's waypoint, so a second one sent there is stopped by the first.
      */
-    public static final int ROOM = 20;
+    public static final String LOBBY_HALL = "lobbyHall";
     /** Robots the lift's cabin carries at once (the simulated cabin is 3 m by 3 m, but a courier drives to its centre). */
     public static final int LIFT_CAPACITY = 1;
     /** The zone of the upper floor's places (its corridor waypoints and wards): one robot fewer than it has places. */
@@ -51,8 +54,15 @@ public final class HospitalTraffic {
             b.node(c, JUNCTION);
         }
         for (String r : HospitalFloor.ROOMS) {
-            b.node(r, r.equals(HospitalFloor.ROBOT_START) ? ROOM : 1);
+            b.node(r, 1);
         }
+        List<String> hall = new ArrayList<>(List.of(LobbyParking.HALL));
+        for (String place : LobbyParking.places().keySet()) {
+            b.node(place, 1);
+            b.edge(LobbyParking.HALL, place);
+            hall.add(LobbyParking.HALL + "-" + place);
+        }
+        b.area(Kind.CORRIDOR, LOBBY_HALL, 1, hall.toArray(String[]::new));
         Map<String, List<String>> doors = new LinkedHashMap<>();
         Map<String, List<String>> corridors = new LinkedHashMap<>();
         Map<String, List<String>> passing = new LinkedHashMap<>();

@@ -20,6 +20,7 @@ import java.util.function.Consumer;
 import org.triad.examples.hospital.HospitalFloor;
 import org.triad.examples.hospital.HospitalObjects;
 import org.triad.examples.hospital.HospitalBuilding;
+import org.triad.examples.hospital.LobbyParking;
 import org.triad.sim.Robot;
 import org.triad.sim.Simulation;
 import org.triad.sim.SimulationClock;
@@ -160,7 +161,7 @@ public final class SimulatedAgv implements AutoCloseable {
         this.objects = hospital.objects();
         this.sim = hospital.sim();
         this.robot = courier.robot();
-        this.lastNodeId = floor.waypointAt(robot.position());
+        this.lastNodeId = nodeHere();
         this.thread = new Thread(this::loop, "agv-" + serial);
         this.sender = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, "agv-" + serial + "-send");
@@ -362,7 +363,7 @@ public final class SimulatedAgv implements AutoCloseable {
             return Optional.of("validationError: an order needs n nodes joined by n-1 edges, got " + nodes.size() + " and " + edges.size());
         }
         for (Node n : nodes) {
-            if (!floor.modelWaypoints().contains(n.nodeId())) {
+            if (!floor.modelWaypoints().contains(n.nodeId()) && !LobbyParking.isPlace(n.nodeId())) {
                 return Optional.of("validationError: node '" + n.nodeId() + "' is not on the hospital map " + floor.modelWaypoints());
             }
             for (Action a : n.actions()) {
@@ -392,7 +393,9 @@ public final class SimulatedAgv implements AutoCloseable {
         }
         List<Node> base = pendingNodes.stream().filter(Node::released).toList();
         String start = update && !base.isEmpty() ? base.get(base.size() - 1).nodeId() : lastNodeId;
-        if (!nodes.get(0).nodeId().equals(start)) {
+        // an order for the models' lobby starts where the AGV stands in it, on a parking spot or the dock: a master that
+        // knows the lobby as one waypoint (./triad run, a plain drive) drives it from there as before
+        if (!nodes.get(0).nodeId().equals(start) && (update || !LobbyParking.waypointOf(start).equals(nodes.get(0).nodeId()))) {
             return Optional.of("noRouteError: the order starts at " + nodes.get(0).nodeId() + " but the AGV is at " + start);
         }
         return Optional.empty();
@@ -404,7 +407,11 @@ public final class SimulatedAgv implements AutoCloseable {
         if (atOrderStart) {
             atOrderStart = false;
             Node at = pendingNodes.remove(0);
-            if (!nodeActions(at)) {
+            boolean ok = nodeActions(at);
+            if (LobbyParking.HALL.equals(LobbyParking.waypointOf(lastNodeId)) && !at.actions().isEmpty()) {
+                lastNodeId = nodeHere(); // a charge asked for at the lobby drives onto the dock: it stands there now
+            }
+            if (!ok) {
                 abortOrder("node action failed");
                 return;
             }
@@ -437,7 +444,7 @@ public final class SimulatedAgv implements AutoCloseable {
                 // reports that node); otherwise (in front of a closed door, where it sees it open again; the lift; a guide;
                 // the way back blocked too) it reports the node it stands at, so the next plan starts there
                 boolean blocked = why.startsWith("PATH_BLOCKED") || why.startsWith("TIMEOUT");
-                lastNodeId = e.actions().isEmpty() && blocked && backOff(e) ? e.startNodeId() : courier.robotActor().loc().name();
+                lastNodeId = e.actions().isEmpty() && blocked && backOff(e) ? e.startNodeId() : nodeHere();
                 abortOrder("edge " + e.edgeId() + " failed");
                 return;
             }
@@ -476,15 +483,28 @@ public final class SimulatedAgv implements AutoCloseable {
         }
     }
 
+    /**
+     * The node the AGV stands on: a lobby's parking spot or its dock when on one (finer than the models' waypoints, as the
+     * traffic map has them), else the models' waypoint of its position.
+     */
+    private String nodeHere() {
+        return LobbyParking.placeAt(robot.position()).orElse(courier.robotActor().loc().name());
+    }
+
     /** Drives back to the edge's start node after a failed drive along it (see {@code SimulatedCourier.backTo}). */
     private boolean backOff(Edge e) {
-        boolean back = courier.robotActor().backTo(objects.waypoint(e.startNodeId()), objects.waypoint(e.endNodeId()));
+        boolean parking = LobbyParking.isPlace(e.startNodeId()) || LobbyParking.isPlace(e.endNodeId());
+        boolean back = parking ? courier.robotActor().parkBack(e.startNodeId())
+                : courier.robotActor().backTo(objects.waypoint(e.startNodeId()), objects.waypoint(e.endNodeId()));
         log.accept("agv " + serial + ": " + (back ? "backed off to " + e.startNodeId() : "could not back off to " + e.startNodeId()
                 + " (" + courier.log().lastFailure().orElse("?") + "), stands at " + courier.robotActor().loc()));
         return back;
     }
 
     private boolean traverse(Edge e) {
+        if (LobbyParking.isPlace(e.startNodeId()) || LobbyParking.isPlace(e.endNodeId())) {
+            return courier.robotActor().park(e.startNodeId(), e.endNodeId()); // a lane of the lobby's parking: a plain drive
+        }
         WayPoint src = objects.waypoint(e.startNodeId());
         WayPoint dst = objects.waypoint(e.endNodeId());
         for (Action a : e.actions()) {
@@ -508,7 +528,7 @@ public final class SimulatedAgv implements AutoCloseable {
     }
 
     private boolean nodeActions(Node n) {
-        WayPoint w = objects.waypoint(n.nodeId());
+        WayPoint w = objects.waypoint(LobbyParking.waypointOf(n.nodeId()));
         for (Action a : n.actions()) {
             setStatus(a, ActionStatus.RUNNING, null);
             publishState();

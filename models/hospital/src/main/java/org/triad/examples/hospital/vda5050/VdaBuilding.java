@@ -108,12 +108,19 @@ public final class VdaBuilding implements IWorld, FailureExplaining {
     @Override
     public boolean walk(Person p, WayPoint src, WayPoint dst) {
         // under traffic control the courier following the person drives a reserved edge like any move (see passDoor)
-        boolean ok = traffic != null ? agv.driveRoute(List.of(src.name(), dst.name()), traffic, "walk", Map.of("personId", p.name()))
+        boolean ok = traffic != null ? walkRoute(p, src.name(), dst.name())
                 : agv.traverse(src.name(), dst.name(), "walk", Map.of("personId", p.name()));
         if (ok) {
             knowledge.personMoved(p.name(), dst.name());
         }
         return ok;
+    }
+
+    /** A walk under traffic control: the models' edge reserved, the lobby's parking lanes before or after it plain drives ({@link LobbyRoutes}). */
+    private boolean walkRoute(Person p, String src, String dst) {
+        String at = agv.state().map(s -> s.lastNodeId()).orElse(null);
+        List<String> route = LobbyRoutes.of(traffic).route(agv.name(), at, src, dst);
+        return agv.driveRoute(route, traffic, LobbyRoutes.actions(route, src, dst, new RemoteAgv.EdgeAction("walk", Map.of("personId", p.name()))));
     }
 
     @Override

@@ -6,6 +6,7 @@ import java.util.Objects;
 import java.util.Optional;
 
 import org.triad.examples.hospital.HospitalObjects;
+import org.triad.examples.hospital.LobbyParking;
 import org.triad.runtime.app.FailureExplaining;
 import org.triad.vda5050.master.RemoteAgv;
 import org.triad.vda5050.master.TrafficControl;
@@ -38,15 +39,40 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return agv;
     }
 
+    /** Under traffic control a move into or out of the lobby starts or ends at a parking spot ({@link LobbyRoutes}). */
     @Override
     public boolean move(WayPoint src, WayPoint dst) {
-        return traffic == null ? agv.drive(src.name(), dst.name()) : agv.driveRoute(List.of(src.name(), dst.name()), traffic);
+        return traffic == null ? agv.drive(src.name(), dst.name())
+                : agv.driveRoute(LobbyRoutes.of(traffic).route(agv.name(), reportedNode(), src.name(), dst.name()), traffic);
     }
 
-    /** VDA 5050's {@code startCharging} at the node: the AGV finishes it when its battery is full. */
+    /**
+     * VDA 5050's {@code startCharging} at the node: the AGV finishes it when its battery is full. Under traffic control the
+     * lobby's dock is a node of its own ({@link LobbyParking#DOCK}): the courier drives there from its spot, queued for it
+     * in the reservation table like for any node, charges, and parks on a free spot again, so the dock is free for the next.
+     */
     @Override
     public boolean recharge(WayPoint w) {
-        return agv.nodeAction(w.name(), "startCharging", Map.of());
+        if (traffic == null || !w.name().equals(LobbyParking.HALL)) {
+            return agv.nodeAction(w.name(), "startCharging", Map.of());
+        }
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        List<String> toDock = lobby.toDock(reportedNode());
+        if (!toDock.isEmpty() && !agv.driveRoute(toDock, traffic)) {
+            return false;
+        }
+        if (!agv.nodeAction(LobbyParking.DOCK, "startCharging", Map.of())) {
+            return false;
+        }
+        // off the dock to a free spot (if that fails, it stays on the dock, a place of its own on the map, and the next
+        // courier to charge waits for it there)
+        lobby.freeSpot(agv.name()).ifPresent(spot -> agv.driveRoute(List.of(LobbyParking.DOCK, LobbyParking.HALL, spot), traffic));
+        return true;
+    }
+
+    /** The node the AGV last reported (a lobby's parking spot, where the models see {@code lobby}), or null. */
+    private String reportedNode() {
+        return agv.state().map(AgvState::lastNodeId).orElse(null);
     }
 
     @Override
@@ -70,7 +96,7 @@ public final class VdaCourier implements IRobot, FailureExplaining {
     @Override
     public boolean guide(Person p, WayPoint src, WayPoint dst) {
         boolean ok = traffic == null ? agv.traverse(src.name(), dst.name(), "guide", Map.of("personId", p.name()))
-                : agv.driveRoute(List.of(src.name(), dst.name()), traffic, "guide", Map.of("personId", p.name()));
+                : driveModelEdge(src.name(), dst.name(), new RemoteAgv.EdgeAction("guide", Map.of("personId", p.name())));
         if (ok) {
             knowledge.personMoved(p.name(), dst.name());
         }
@@ -82,9 +108,16 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return agv.nodeAction(w.name(), "startFollowing", Map.of("personId", p.name()));
     }
 
+    /** Where the AGV reports standing, as the models know it: {@code lobby} for a parking spot or the dock. */
     @Override
     public WayPoint loc() {
-        return objects.waypoint(state().lastNodeId());
+        return objects.waypoint(LobbyParking.waypointOf(state().lastNodeId()));
+    }
+
+    /** The models' edge under traffic control, {@code action} along it, the lobby's parking lanes before or after it plain. */
+    private boolean driveModelEdge(String src, String dst, RemoteAgv.EdgeAction action) {
+        List<String> route = LobbyRoutes.of(traffic).route(agv.name(), reportedNode(), src, dst);
+        return agv.driveRoute(route, traffic, LobbyRoutes.actions(route, src, dst, action));
     }
 
     /** The AGV's last {@code batteryState.batteryCharge}, percent. */

@@ -22,6 +22,18 @@ final class AgvProcess implements AutoCloseable {
         this.output = output;
     }
 
+    /**
+     * A route from where the courier parked in the lobby (the dock or a spot: the node its AGV reports, a node of the
+     * hospital's traffic map) out through the lobby's waypoint and on along {@code then}.
+     */
+    static java.util.List<String> outOfTheLobby(org.triad.vda5050.master.RemoteAgv agv, String... then) {
+        java.util.List<String> route = new java.util.ArrayList<>();
+        route.add(agv.state().orElseThrow().lastNodeId());
+        route.add(org.triad.examples.hospital.LobbyParking.HALL);
+        route.addAll(java.util.List.of(then));
+        return route;
+    }
+
     static AgvProcess start(String broker, String serial, double speed, Path dir, String... extra) {
         List<String> args = new ArrayList<>(List.of("--broker", broker, "--serial", serial, "--speed", Double.toString(speed)));
         args.addAll(List.of(extra));

@@ -21,8 +21,8 @@ import java.util.regex.Pattern;
 import org.triad.building.traffic.Resource.Kind;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.building.traffic.TrafficStats;
-import org.triad.examples.hospital.HospitalBuilding;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.LobbyParking;
 import org.triad.vda5050.broker.MosquittoBroker;
 import org.triad.vda5050.devices.DeviceLink;
 import org.triad.vda5050.master.DoorKeeper;
@@ -42,8 +42,8 @@ import org.triad.vda5050.protocol.AgvState;
  * completed per simulated hour, drives that failed, waits for doors and corridors/lanes (median, p95, max, in
  * simulated seconds) and the master's CPU (this JVM: master control, traffic control, the couriers' loops).
  * Guides need people and are left out (the building has two, Alice and Bob, not one a courier). A courier's battery
- * drains 0.5 % a metre (issue #22): below {@value #RECHARGE_BELOW} % it drives to the dock (the lobby's waypoint, one
- * courier at a time: the others queue for it before setting off) and charges before its next leg; without that every
+ * drains 0.5 % a metre (issue #22): below {@value #RECHARGE_BELOW} % it drives to the dock (a node of the traffic map,
+ * {@link LobbyParking#DOCK}: couriers queue for it in the reservation table) and charges before its next leg; without that every
  * courier ran flat after some 200 m and stood, and the rows measured dead couriers.
  *
  * <pre>
@@ -147,8 +147,6 @@ public final class BuildingTrafficBenchmark {
             AtomicLong failed = new AtomicLong();
             AtomicLong routes = new AtomicLong();
             AtomicLong charges = new AtomicLong();
-            AtomicLong dockBusy = new AtomicLong();
-            java.util.concurrent.Semaphore dock = new java.util.concurrent.Semaphore(1, true);
             Map<String, Long> lastProgress = new ConcurrentHashMap<>();
             Map<String, Boolean> busy = new ConcurrentHashMap<>();
             // what each courier's thread does now: a standstill's report names who waits for what outside the table too
@@ -159,8 +157,7 @@ public final class BuildingTrafficBenchmark {
             for (int i = 0; i < n; i++) {
                 RemoteAgv agv = agvs.get(i);
                 Random random = new Random(seed * 1000 + i);
-                long delay = i == 0 ? 0 : 3000; // courier-1 starts on the lobby's dock, in the others' way out: it leaves first
-                boolean[] onDock = { false };
+                long delay = i == 0 ? 0 : 3000; // courier-1 starts on the lobby's dock: it leaves first
                 Thread t = new Thread(() -> {
                     sleep(delay);
                     while (running.get()) {
@@ -178,20 +175,15 @@ public final class BuildingTrafficBenchmark {
                         for (int k = 0; k < stops.size(); k++) {
                             String stop = stops.get(k);
                             boolean charge = false;
-                            if (!onDock[0] && battery(agv) < RECHARGE_BELOW) {
-                                phase.put(agv.name(), "asks for the dock (below " + MUST_CHARGE_BELOW + " % waits for it, at most the wait bound)");
-                            }
-                            if (!onDock[0] && battery(agv) < RECHARGE_BELOW && !dockFor(dock, agv, speed)) {
-                                dockBusy.incrementAndGet(); // the dock is another courier's: this leg first, the dock after it
-                            } else if (!onDock[0] && battery(agv) < RECHARGE_BELOW) {
-                                // to the dock before the next leg: it is the lobby's waypoint, for one courier at a time (held
-                                // until this one has driven off it again)
-                                onDock[0] = true;
-                                stop = HospitalBuilding.DOCK;
+                            String from = where(agv);
+                            if (!from.equals(LobbyParking.DOCK) && battery(agv) < RECHARGE_BELOW) {
+                                // to the dock before the next leg: a node of the traffic map for one courier, queued for in
+                                // the reservation table like any other (it was a semaphore outside the table, whose waits
+                                // closed cycles no rule saw: session 12's standstills)
+                                stop = LobbyParking.DOCK;
                                 charge = true;
                                 k--;
                             }
-                            String from = where(agv);
                             if (!from.equals(stop)) {
                                 List<String> path = path(map, from, stop);
                                 routes.incrementAndGet();
@@ -200,12 +192,8 @@ public final class BuildingTrafficBenchmark {
                             }
                             if (charge && ok) {
                                 phase.put(agv.name(), "charges on the dock");
-                                ok = agv.nodeAction(HospitalBuilding.DOCK, "startCharging", Map.of());
+                                ok = agv.nodeAction(LobbyParking.DOCK, "startCharging", Map.of());
                                 charges.incrementAndGet();
-                            }
-                            if (onDock[0] && (!charge || !ok)) { // drove off the dock (or never got onto it)
-                                onDock[0] = false;
-                                dock.release();
                             }
                             lastProgress.put(agv.name(), System.nanoTime());
                             if (!ok) {
@@ -280,8 +268,7 @@ public final class BuildingTrafficBenchmark {
             Files.write(dir.resolve("master.log"), new ArrayList<>(log));
             System.err.println("logs (building, master) in " + dir);
             System.err.printf(Locale.ROOT, "longest still: %.0f s, %s%n", longestStill, longestStillOf);
-            System.err.printf(Locale.ROOT, "dock: %d charges, %d times taken when asked (the leg first), lowest battery %.1f %%%n", charges.get(),
-                    dockBusy.get(), lowestBattery);
+            System.err.printf(Locale.ROOT, "dock: %d charges, lowest battery %.1f %%%n", charges.get(), lowestBattery);
             Matcher m = SIMULATED.matcher(building.output());
             double simSeconds = (System.nanoTime() - start) / 1e9 * speed;
             while (m.find()) {
@@ -315,32 +302,6 @@ public final class BuildingTrafficBenchmark {
      * at the courier's 0.5 % per metre), and from there the dock as far again.
      */
     private static final double RECHARGE_BELOW = 60;
-    /** Below this charge, percent, a courier waits for the dock (at most the wait bound) instead of doing its leg first. */
-    private static final double MUST_CHARGE_BELOW = 30;
-
-    /**
-     * Whether the courier gets the dock: at once if it is free; else, above {@value #MUST_CHARGE_BELOW} %, it goes on with
-     * its leg and asks again after it; below, it waits for the dock where it stands, at most the table's wait bound. The
-     * dock's queue is outside the reservation table: a courier waiting for it on the ring, unbounded as it was, closed
-     * cycles that no rule saw (couriers waiting in the table for the one standing there, ending at the dock's holder
-     * driving to the dock behind them: three of four standstills in a run, the longest 680 simulated s). Never waiting
-     * for it ran couriers flat (0 % in c6's doorway); waiting only in rooms did too.
-     */
-    private static boolean dockFor(java.util.concurrent.Semaphore dock, RemoteAgv agv, double speed) {
-        if (dock.tryAcquire()) {
-            return true;
-        }
-        if (battery(agv) >= MUST_CHARGE_BELOW) {
-            return false;
-        }
-        try {
-            return dock.tryAcquire((long) (120 / speed * 1000), java.util.concurrent.TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
-        }
-    }
-
     private static double battery(RemoteAgv agv) {
         return agv.state().map(s -> s.batteryState() == null ? 100.0 : s.batteryState().batteryCharge()).orElse(100.0);
     }

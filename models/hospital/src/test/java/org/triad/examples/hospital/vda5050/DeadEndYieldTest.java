@@ -44,8 +44,8 @@ class DeadEndYieldTest {
             assertTrue(one.awaitOnline() && two.awaitOnline(), building.output());
             TrafficControl traffic = new TrafficControl(HospitalTraffic.map(new HospitalFloor()), 300, log::add).keepDoors(keeper).stepAside(true);
 
-            assertTrue(one.driveRoute(List.of("lobby", "c4", "c5", "ward3"), traffic), one.lastFailure() + "\n" + log);
-            assertTrue(two.driveRoute(List.of("lobby", "c4", "c5"), traffic), two.lastFailure() + "\n" + log);
+            assertTrue(one.driveRoute(AgvProcess.outOfTheLobby(one, "c4", "c5", "ward3"), traffic), one.lastFailure() + "\n" + log);
+            assertTrue(two.driveRoute(AgvProcess.outOfTheLobby(two, "c4", "c5"), traffic), two.lastFailure() + "\n" + log);
 
             CompletableFuture<Boolean> in = CompletableFuture.supplyAsync(() -> two.driveRoute(List.of("c5", "ward3"), traffic));
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);

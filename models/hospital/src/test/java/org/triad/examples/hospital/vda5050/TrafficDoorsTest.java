@@ -50,14 +50,14 @@ class TrafficDoorsTest {
             assertTrue(!HospitalTraffic.keptDoors(new HospitalFloor()).contains(HospitalFloor.FIRE_DOOR), "the fire door is not kept");
 
             TrafficControl traffic = new TrafficControl(HospitalTraffic.map(new HospitalFloor()), 120, log::add).keepDoors(keeper);
-            CompletableFuture<Boolean> east = CompletableFuture.supplyAsync(() -> one.driveRoute(List.of("lobby", "c4", "c5"), traffic));
-            // courier-1 first: it starts on the lobby's dock, on the way out of courier-2's parking spot (the building's layout)
+            CompletableFuture<Boolean> east = CompletableFuture.supplyAsync(() -> one.driveRoute(AgvProcess.outOfTheLobby(one, "c4", "c5"), traffic));
+            // courier-1 first (it starts on the lobby's dock, courier-2 on a spot): it holds the hall and the doorway when courier-2 asks
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
             while (!lobbyDoor.contains(DeviceMessages.OPEN)) {
                 assertTrue(System.nanoTime() < deadline, "the lobby door was not opened for courier-1: " + lobbyDoor + "\n" + log);
                 Thread.sleep(10);
             }
-            CompletableFuture<Boolean> west = CompletableFuture.supplyAsync(() -> two.driveRoute(List.of("lobby", "c4", "c1"), traffic));
+            CompletableFuture<Boolean> west = CompletableFuture.supplyAsync(() -> two.driveRoute(AgvProcess.outOfTheLobby(two, "c4", "c1"), traffic));
             assertTrue(east.get(180, TimeUnit.SECONDS), one.lastFailure() + "\n" + log + "\n" + building.output());
             assertTrue(west.get(180, TimeUnit.SECONDS), two.lastFailure() + "\n" + log + "\n" + building.output());
             assertTrue(log.stream().anyMatch(l -> l.startsWith("traffic: door 'lobbyDoor' opened for triad/courier-")), log.toString());

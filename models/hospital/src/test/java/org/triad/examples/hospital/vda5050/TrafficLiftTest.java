@@ -54,8 +54,8 @@ class TrafficLiftTest {
                     && t.map().areasOf(t.map().node("c7")).contains(passingC7) && t.map().isStop("c7"));
             assertTrue(laneAndLanding, "the lane c3-c6 and the landing c7 are one place for one robot, where robots may still wait");
 
-            assertTrue(one.driveRoute(List.of("lobby", "c4", "c5", "c6", "c7"), traffic), one.lastFailure() + "\n" + log);
-            assertTrue(two.driveRoute(List.of("lobby", "c4", "c5", "c6"), traffic), two.lastFailure() + "\n" + log);
+            assertTrue(one.driveRoute(AgvProcess.outOfTheLobby(one, "c4", "c5", "c6", "c7"), traffic), one.lastFailure() + "\n" + log);
+            assertTrue(two.driveRoute(AgvProcess.outOfTheLobby(two, "c4", "c5", "c6"), traffic), two.lastFailure() + "\n" + log);
 
             // who holds the lift, and whether courier-2 waits meanwhile, sampled while they ride
             List<Set<String>> holders = new CopyOnWriteArrayList<>();

@@ -1,0 +1,115 @@
+package org.triad.examples.hospital.vda5050;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.WeakHashMap;
+
+import org.triad.examples.hospital.LobbyParking;
+import org.triad.vda5050.master.RemoteAgv;
+import org.triad.vda5050.master.TrafficControl;
+
+/**
+ * The models' moves into and out of the lobby as routes of the traffic map, which is finer there than the models'
+ * waypoints ({@link LobbyParking}): a move out of {@code lobby} starts at the spot or dock the AGV reports standing on and
+ * drives through the hall's centre; a move into {@code lobby} drives through the centre on to a free parking spot, so
+ * nobody stays on the way out and the map knows where in the lobby each courier stands; a charge drives to the dock, a
+ * node of its own that couriers queue for in the reservation table. One per traffic control (its robots' own spots).
+ */
+public final class LobbyRoutes {
+    private static final Map<TrafficControl, LobbyRoutes> OF = Collections.synchronizedMap(new WeakHashMap<>());
+
+    private final TrafficControl traffic;
+    /** Each robot's own spot, given in the order robots first park: a robot parks there when it is free. */
+    private final Map<String, String> homes = new LinkedHashMap<>();
+
+    LobbyRoutes(TrafficControl traffic) {
+        this.traffic = traffic;
+    }
+
+    /** The lobby's routes under this traffic control (one for all its robots). */
+    public static LobbyRoutes of(TrafficControl traffic) {
+        return OF.computeIfAbsent(traffic, LobbyRoutes::new);
+    }
+
+    /**
+     * The traffic map's route for the models' edge {@code src -> dst}, for the robot whose AGV reports standing at
+     * {@code at} (null: unknown): from its spot or the dock through the hall's centre when it stands on one of the
+     * lobby's, on to a free spot when {@code dst} is the lobby (the centre if every spot is taken).
+     */
+    public List<String> route(String robot, String at, String src, String dst) {
+        if (LobbyParking.spots().contains(at)) {
+            synchronized (homes) { // a robot's own spot is the first it was seen parked on
+                if (!homes.containsKey(robot) && !homes.containsValue(at)) {
+                    homes.put(robot, at);
+                }
+            }
+        }
+        List<String> r = new ArrayList<>();
+        if (at != null && !at.equals(src) && LobbyParking.isPlace(at) && LobbyParking.waypointOf(at).equals(src)) {
+            r.add(at);
+        }
+        r.add(src);
+        r.add(dst);
+        if (dst.equals(LobbyParking.HALL)) {
+            freeSpot(robot).ifPresent(r::add);
+        }
+        return r;
+    }
+
+    /** The route from where the robot stands in the lobby ({@code at}) to the dock; empty when it stands on it. */
+    public List<String> toDock(String at) {
+        if (LobbyParking.DOCK.equals(at)) {
+            return List.of();
+        }
+        List<String> r = new ArrayList<>();
+        if (at != null && LobbyParking.isPlace(at)) {
+            r.add(at);
+        }
+        r.add(LobbyParking.HALL);
+        r.add(LobbyParking.DOCK);
+        return r;
+    }
+
+    /**
+     * {@code action} (or null) along the route's models' edge {@code src -> dst}; the lanes of the lobby's parking before
+     * and after it are plain drives.
+     */
+    public static List<RemoteAgv.EdgeAction> actions(List<String> route, String src, String dst, RemoteAgv.EdgeAction action) {
+        List<RemoteAgv.EdgeAction> each = new ArrayList<>();
+        for (int i = 1; i < route.size(); i++) {
+            each.add(route.get(i - 1).equals(src) && route.get(i).equals(dst) ? action : null);
+        }
+        return each;
+    }
+
+    /**
+     * Where in the lobby the robot parks now: its own spot (given the first time it parks, one robot a spot while they
+     * last) if nobody holds or waits for it, else the first such spot; empty when every spot is taken. Own spots keep two
+     * robots that park at once from choosing the same one (the second would wait for the first, parked there for good).
+     */
+    public Optional<String> freeSpot(String robot) {
+        return traffic.read(t -> {
+            synchronized (homes) {
+                String home = homes.get(robot);
+                if (home == null) {
+                    home = LobbyParking.spots().stream().filter(s -> !homes.containsValue(s)).findFirst().orElse(null);
+                    if (home != null) {
+                        homes.put(robot, home);
+                    }
+                }
+                // its own spot first, then those nobody owns, then the others' (their owners are elsewhere)
+                List<String> order = new ArrayList<>();
+                if (home != null) {
+                    order.add(home);
+                }
+                LobbyParking.spots().stream().filter(s -> !homes.containsValue(s)).forEach(order::add);
+                order.addAll(LobbyParking.spots());
+                return order.stream().filter(s -> t.needing(t.map().node(s)).isEmpty()).findFirst();
+            }
+        });
+    }
+}
