@@ -513,6 +513,20 @@ public final class ReservationTable {
         return s.pending == null ? Set.of() : Set.copyOf(s.pending.needed);
     }
 
+    /**
+     * The nodes of the route the robot waits to drive (its stretch and the horizon after it), or none when it waits for
+     * nothing: where it is heading, so that a robot getting out of the way does not step into its destination.
+     */
+    public List<String> heading(String robot) {
+        RobotState s = robot(robot);
+        if (s.pending == null) {
+            return List.of();
+        }
+        List<String> route = new ArrayList<>(s.pending.stretch);
+        route.addAll(s.pending.horizon.subList(1, s.pending.horizon.size()));
+        return List.copyOf(route);
+    }
+
     /** The robot's waiting request, if any, with its reason. */
     public Optional<Wait> waiting(String robot) {
         RobotState s = robot(robot);

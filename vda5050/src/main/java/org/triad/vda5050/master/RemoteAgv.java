@@ -480,6 +480,10 @@ public final class RemoteAgv implements FailureExplaining {
      * it went, and its caller re-plans from there.
      */
     private void stepAsideAfter(RouteDrive drive, TrafficControl traffic) {
+        if (drive.waitedInVain()) {
+            clearTheWay(traffic);
+            return;
+        }
         if (!drive.madeWay() && drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
             return;
         }
@@ -511,6 +515,32 @@ public final class RemoteAgv implements FailureExplaining {
             lastFailure = why + (moved ? "; stepped aside to '" + side.get() + "', out of the others' way" : "; could not step aside: " + lastFailure
                     + other.map(o -> "; so " + o + " makes way").orElse(""));
             lastCause = cause; // the drive's end is what the call failed of; stepping aside is how it got out of the way
+        }
+    }
+
+    /**
+     * Its wait went over the bound: into a free room off the corridor node it stands at, if there is one
+     * ({@link TrafficControl#roomAside}), so that the robots queued behind it move on while its caller re-plans; the
+     * call's failure says where it went. Standing there, it was the end of a chain of waits until its next drive.
+     */
+    private void clearTheWay(TrafficControl traffic) {
+        String why;
+        Failure.Cause cause;
+        synchronized (lock) {
+            why = lastFailure;
+            cause = lastCause;
+        }
+        awaitAbandonedOrderEnded();
+        String from = traffic.decisionPoint(name());
+        Optional<String> room = traffic.roomAside(name());
+        if (room.isEmpty()) {
+            return;
+        }
+        traffic.note("traffic: " + name() + " steps aside from " + from + " to " + room.get() + ", clearing the way after a wait over the bound");
+        boolean moved = driveRouteUnder(List.of(from, room.get()), traffic, "step aside " + from + " -> " + room.get(), List.of(), false);
+        synchronized (lock) {
+            lastFailure = why + (moved ? "; stepped aside to '" + room.get() + "', clearing the way" : "; could not step aside: " + lastFailure);
+            lastCause = cause;
         }
     }
 

@@ -66,6 +66,8 @@ final class RouteDrive {
     private boolean madeWay;
     /** Traffic control's refusal that ended the drive, if one did. */
     private Refused refusal;
+    /** The drive ended because its wait went over the bound. */
+    private boolean waitedInVain;
 
     /**
      * @param stopNow sends the AGV an instant action that stops it at once (its argument the reason)
@@ -140,6 +142,11 @@ final class RouteDrive {
         return ahead;
     }
 
+    /** Whether the drive ended because its wait for the next stretch went over the bound. */
+    boolean waitedInVain() {
+        return waitedInVain;
+    }
+
     /** Whether the drive ended at its decision point with its order sent (the AGV still drives there: see {@link #trail}). */
     boolean endedAtDecisionPoint() {
         return endedHere;
@@ -182,6 +189,7 @@ final class RouteDrive {
         Optional<Wait> late = traffic.overdue(robot);
         if (late.isPresent()) {
             waiting = false;
+            waitedInVain = true;
             return endHere(String.format(Locale.ROOT, "%s for more than %.1f s (the wait bound)", late.get().reason(), traffic.waitBoundSeconds()), true);
         }
         if (!orderId.equals(s.orderId())) {

@@ -239,12 +239,52 @@ public final class TrafficControl {
     }
 
     /**
-     * The stop nodes for one robot next to {@code at}, by name: a hall for several (the lobby) has one waypoint, which
-     * all robots getting out of the way into it would drive to.
+     * The stop nodes for one robot next to {@code at}: first the dead ends (rooms off {@code at}) that no waiting robot is
+     * heading for, then the rest, each by name. A hall for several (the lobby) is left out: it has one waypoint, which all
+     * robots getting out of the way into it would drive to. Rooms first, so that a robot getting out of the way leaves
+     * the corridor: before, it took the first free neighbour by name, a corridor node ({@code c...} before {@code storage},
+     * {@code ward...}), and a ring of corridor nodes for one robot each filled with robots stepping aside and waiting
+     * on it, until none could move but through refusals (the dyn4j benchmark's full ground-floor ring, session 12's cause 4).
      */
     private List<String> placesForOneNextTo(String at) {
-        return new java.util.TreeSet<>(table.map().neighbours(at)).stream()
+        java.util.Set<String> headedFor = new java.util.HashSet<>();
+        for (String r : table.robots()) {
+            headedFor.addAll(table.heading(r));
+        }
+        List<String> forOne = new java.util.TreeSet<>(table.map().neighbours(at)).stream()
                 .filter(n -> table.map().isStop(n) && table.map().node(n).capacity() <= 1).toList();
+        List<String> ordered = new java.util.ArrayList<>(forOne.stream().filter(n -> isDeadEndOff(n, at) && !headedFor.contains(n)).toList());
+        forOne.stream().filter(n -> !ordered.contains(n)).forEach(ordered::add);
+        return ordered;
+    }
+
+    /** Whether {@code n} is a dead end whose only way out is {@code at} (a room off a corridor node). */
+    private boolean isDeadEndOff(String n, String at) {
+        return table.map().neighbours(n).equals(java.util.Set.of(at));
+    }
+
+    /**
+     * A free dead end next to the robot's decision point, when that is a node others drive through: where a robot whose
+     * wait went over the bound clears the way while its caller re-plans (a room no robot holds, waits for or is heading
+     * for, reached by a plain lane: never the lift), or none. A robot that waited in vain stood in a chain of robots each
+     * waiting for the next one's node; staying there it went on blocking the ones behind it, and the benchmark's
+     * standstills ended at such robots, resting on the ring after a failed drive.
+     */
+    synchronized Optional<String> roomAside(String robot) {
+        if (!table.robots().contains(robot) || table.isLost(robot) || table.waiting(robot).isPresent()) {
+            return Optional.empty();
+        }
+        String at = table.decisionPoint(robot);
+        if (table.map().neighbours(at).size() < 2) {
+            return Optional.empty(); // in a dead end already
+        }
+        for (String n : placesForOneNextTo(at)) {
+            if (isDeadEndOff(n, at) && table.robots().stream().noneMatch(o -> table.heading(o).contains(n))
+                    && newOnStep(robot, at, n).stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && othersNeeding(r, robot) + 1 <= r.capacity())) {
+                return Optional.of(n);
+            }
+        }
+        return Optional.empty();
     }
 
     /** The resources of the step that the robot does not hold yet (a zone it stands in is no obstacle). */

@@ -295,4 +295,48 @@ class RouteDriveTest {
         assertEquals(java.util.Optional.of("c5"), traffic.wayOut("B", refused.cycle()),
                 "c0 and the lane over it are what A waits for: B queues for c5 instead, off A's way");
     }
+
+    /**
+     * The dyn4j benchmark's full ground-floor ring (session 12's cause 4): chains of couriers each waiting for the next one's
+     * node ended at a courier standing on the ring after a failed drive. A robot whose wait went over the bound now clears
+     * the way into a free room off the node it stands at (never one a waiting robot is heading for), and a robot stepping
+     * aside takes a room before a corridor node.
+     */
+    @Test
+    void aRobotWhoseWaitWentOverTheBoundClearsTheWayIntoAFreeRoomOffTheRing() throws InterruptedException {
+        // the ring a - b - c - d - a with a room off a, b and c each
+        TrafficMap map = TrafficMap.builder().node("a").node("b").node("c").node("d").node("ra").node("rb").node("rc")
+                .edge("a", "b").edge("b", "c").edge("c", "d").edge("d", "a").edge("a", "ra").edge("b", "rb").edge("c", "rc").build();
+        TrafficControl traffic = new TrafficControl(map, 0.2, l -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        assertTrue(traffic.place("C", "c"));
+        assertEquals(java.util.Optional.of("ra"), traffic.aside("A"), "the room off a before the free corridor node d");
+
+        RouteDrive drive = new RouteDrive("A", List.of("a", "b", "c"), "o1", traffic, (id, u, n, e) -> { }, why -> { });
+        assertTrue(drive.start().isEmpty());
+        assertTrue(traffic.read(t -> t.waiting("A")).isPresent(), "A waits for B's node");
+        assertTrue(traffic.roomAside("A").isEmpty(), "not while it waits");
+        RouteDrive.Verdict v = RouteDrive.Verdict.RUNNING;
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        while (v.failure() == null && System.nanoTime() < deadline) {
+            v = drive.onState(state("o1", "a", 0, false));
+            Thread.sleep(20);
+        }
+        assertTrue(v.failure().contains("the wait bound"), v.failure());
+        assertTrue(drive.waitedInVain(), "so RemoteAgv clears the way");
+        assertFalse(drive.deadlockAvoided());
+        drive.abandon(false);
+        assertEquals(java.util.Optional.of("ra"), traffic.roomAside("A"), "a, where it stands, is a corridor node with a free room off it");
+
+        // D, waiting at d for its way to ra, is heading there: A does not take it
+        assertTrue(traffic.place("D", "d"));
+        assertFalse(traffic.request("D", List.of("d", "c", "b", "a", "ra")) instanceof Granted);
+        assertEquals(List.of("d", "c", "b", "a", "ra"), traffic.read(t -> t.heading("D")));
+        assertTrue(traffic.roomAside("A").isEmpty(), "ra is where D is heading");
+        assertEquals(java.util.Optional.of("rc"), traffic.roomAside("C"), "nobody is heading for rc");
+        assertTrue(traffic.place("E", "rb"));
+        assertTrue(traffic.roomAside("B").isEmpty(), "E is in rb");
+        assertTrue(traffic.roomAside("E").isEmpty(), "E is in a room already");
+    }
 }

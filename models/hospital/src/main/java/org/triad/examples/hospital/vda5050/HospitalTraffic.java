@@ -40,6 +40,16 @@ public final class HospitalTraffic {
     public static final int LIFT_CAPACITY = 1;
     /** The zone of the upper floor's places (its corridor waypoints and wards): one robot fewer than it has places. */
     public static final String UPPER_FLOOR = "floor1";
+    /** The zone of every place out of the lobby (corridors, rooms, the lift, the upper floor): see {@link #ADMITTED}. */
+    public static final String OUT_OF_THE_LOBBY = "outOfTheLobby";
+    /**
+     * Robots admitted out of the lobby at once (system property {@code traffic.admitted}, default 8): the rest wait in the
+     * lobby, a hall for many, for one to come back. The ground floor's ring has 8 places for one; with every courier out
+     * of the lobby (10 of them, and 17 or more of 20 fill every place out of it), it filled and only turned through
+     * refusals (building/README.md, the dyn4j benchmark's cause 4). A robot already out never waits for the zone (it holds
+     * it), so a robot in a room always comes out, unlike an admission to the ring alone (session 11: 0 tasks in 20 minutes).
+     */
+    public static final int ADMITTED = Integer.getInteger("traffic.admitted", 8);
     /** The prefix of the zone of a waypoint that another lane's way runs over (e.g. {@code passing-c0}). */
     public static final String PASSING = "passing-";
     /** Two couriers touch at 0.6 m between their centres: a lane passing nearer a waypoint than that passes through it. */
@@ -134,6 +144,17 @@ public final class HospitalTraffic {
         }
         long places = upper.stream().filter(b.nodeIds()::contains).count();
         b.area(Kind.ZONE, UPPER_FLOOR, (int) places - 1, upper.toArray(String[]::new));
+        // the places out of the lobby: the model's corridor waypoints and rooms but the lobby (not the places in it), every
+        // edge between two of them
+        List<String> out = new ArrayList<>(floor.modelWaypoints().stream().filter(n -> !n.equals(HospitalFloor.ROBOT_START) && b.nodeIds().contains(n))
+                .sorted().toList());
+        for (String e : b.edgeIds()) {
+            String[] ends = e.split("-");
+            if (ends.length == 2 && out.contains(ends[0]) && out.contains(ends[1])) {
+                out.add(e);
+            }
+        }
+        b.area(Kind.ZONE, OUT_OF_THE_LOBBY, ADMITTED, out.toArray(String[]::new));
         doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
         corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
         return b.build();

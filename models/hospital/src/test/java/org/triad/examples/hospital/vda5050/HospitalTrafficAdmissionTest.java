@@ -1,0 +1,76 @@
+package org.triad.examples.hospital.vda5050;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Decision.Waiting;
+import org.triad.building.traffic.ReservationTable;
+import org.triad.building.traffic.ReservationTable.Changes;
+import org.triad.building.traffic.Resource;
+import org.triad.building.traffic.TrafficMap;
+import org.triad.examples.hospital.HospitalFloor;
+
+/**
+ * The hospital's admission out of the lobby ({@link HospitalTraffic#ADMITTED}), on the table alone (no broker): with as many
+ * robots out as admitted, a robot leaving the lobby waits there, robots out of the lobby still move (a robot in a room comes
+ * out), and the one waiting goes as soon as one comes back.
+ */
+class HospitalTrafficAdmissionTest {
+    private final double[] now = { 0 };
+
+    /** Drives the robot along its whole base, node by node: the requests that granted. */
+    private static List<Granted> driveBase(ReservationTable t, String robot) {
+        List<Granted> granted = new java.util.ArrayList<>();
+        for (String n : List.copyOf(t.base(robot)).subList(1, t.base(robot).size())) {
+            Changes c = t.passed(robot, n);
+            granted.addAll(c.granted());
+        }
+        return granted;
+    }
+
+    @Test
+    void aRobotLeavesTheLobbyOnlyWhileFewerThanTheAdmittedAreOutAndThoseOutAlwaysMove() {
+        TrafficMap map = HospitalTraffic.map(new HospitalFloor());
+        Resource out = map.area(HospitalTraffic.OUT_OF_THE_LOBBY).orElseThrow();
+        assertEquals(HospitalTraffic.ADMITTED, out.capacity());
+        ReservationTable t = new ReservationTable(map, () -> now[0]);
+        List<String> places = List.of("storage", "xray", "ward1", "ward3", "ward2", "pharmacy", "d2", "ward4", "c5", "c6");
+        for (int i = 0; i < HospitalTraffic.ADMITTED; i++) {
+            t.place("r" + i, places.get(i));
+        }
+        t.place("lobby-1", HospitalFloor.ROBOT_START);
+        Waiting w = assertInstanceOf(Waiting.class, t.request("lobby-1", List.of("lobby", "c4", "c5")));
+        assertTrue(w.queued().blocking().contains(out), w.queued().reason());
+        assertEquals(HospitalTraffic.ADMITTED, t.holders(out).size());
+
+        // out of the lobby, robots come out of their rooms and drive on: they hold the zone already
+        Granted fromWard3 = assertInstanceOf(Granted.class, t.request("r3", List.of("ward3", "c5", "c6")));
+        assertEquals(List.of("ward3", "c5"), fromWard3.stretch());
+        driveBase(t, "r3");
+
+        // r0 comes back from the storage room to the lobby (the dock): it goes ahead of the waiting one, whose way it is in,
+        // and once it is in the lobby the waiting one is admitted
+        assertInstanceOf(Granted.class, t.request("r0", List.of("storage", "c1", "c0", "c4", "lobby")));
+        driveBase(t, "r0");
+        Granted g = null;
+        for (int i = 0; i < 3 && !t.base("r0").get(t.base("r0").size() - 1).equals("lobby"); i++) {
+            List<String> rest = List.of("storage", "c1", "c0", "c4", "lobby");
+            String at = t.decisionPoint("r0");
+            assertInstanceOf(Granted.class, t.request("r0", rest.subList(rest.indexOf(at), rest.size())));
+            for (Granted x : driveBase(t, "r0")) {
+                if (x.robot().equals("lobby-1")) {
+                    g = x;
+                }
+            }
+        }
+        assertEquals("lobby", t.decisionPoint("r0"));
+        assertTrue(g != null, "lobby-1 is admitted as r0 is back in the lobby");
+        assertEquals(List.of("lobby", "c4"), g.stretch());
+        assertEquals(HospitalTraffic.ADMITTED, t.holders(out).size());
+    }
+}
