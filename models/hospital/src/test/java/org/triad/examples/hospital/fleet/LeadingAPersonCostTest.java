@@ -26,4 +26,17 @@ class LeadingAPersonCostTest {
         assertEquals(0, VdaHospitalFleet.LEADING_A_PERSON.extra(move));
         assertEquals(0, VdaHospitalFleet.LEADING_A_PERSON.extra(pick));
     }
+
+    @Test
+    void aGuideAlongACongestedEdgeCostsWhatTheMoveCostsAndAStepMore() {
+        HospitalObjects o = new HospitalObjects();
+        // c6 -> c5 congested: 3 steps of expected wait for whoever drives it
+        org.triad.runtime.schema.ActionCosts congestion = a -> a.action().equals("move") && a.args().equals(List.of(o.waypoint("c6"), o.waypoint("c5"))) ? 3 : 0;
+        org.triad.runtime.schema.ActionCosts costs = VdaHospitalFleet.leadingAPerson(congestion);
+        GroundAction guide = new GroundAction("Courier", "guide", List.of(o.person("alice"), o.waypoint("c6"), o.waypoint("c5")));
+        GroundAction move = new GroundAction("Courier", "move", List.of(o.waypoint("c6"), o.waypoint("c5")));
+        assertEquals(4, costs.extra(guide), "a guide is never the cheap way round a congested edge");
+        assertEquals(3, congestion.extra(move) + costs.extra(move));
+        assertEquals(1, costs.extra(new GroundAction("Courier", "guide", List.of(o.person("alice"), o.waypoint("c4"), o.waypoint("c5")))));
+    }
 }
