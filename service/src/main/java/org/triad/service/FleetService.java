@@ -520,6 +520,20 @@ public final class FleetService implements AutoCloseable {
         }
     }
 
+    /** The most robots running a task at once ({@link DispatchLimit}), or 0 for no limit. */
+    private volatile int atOnce;
+
+    /**
+     * From now on at most {@code limit.robots()} robots run a task at the same time (a charging task is not held back);
+     * the other idle robots wait where they stand, parked, until one of the working robots is done.
+     */
+    public void limitAtOnce(DispatchLimit limit) {
+        synchronized (lock) {
+            atOnce = limit.robots();
+            lock.notifyAll();
+        }
+    }
+
     /** The robot's charge when the policy says it is too low for work, else null. */
     private Double lowCharge(RobotLane l) {
         ChargingPolicy policy = charging;
@@ -838,7 +852,12 @@ public final class FleetService implements AutoCloseable {
             return null;
         }
         Instant now0 = clock.instant();
+        int limit = atOnce;
+        boolean full = limit > 0 && lanes.values().stream().filter(l -> l.online() && !l.idle()).count() >= limit;
         for (Long id : queue) {
+            if (full && !chargingTask(id)) {
+                continue; // as many robots work as the building carries: the others stay parked
+            }
             Instant pause = notBefore.get(id);
             if (pause != null && now0.isBefore(pause)) {
                 continue; // queued again after congestion: the others move on first

@@ -106,6 +106,7 @@ public final class TriadService implements AutoCloseable {
             solver = traffic.costs().map(solver::withCosts).orElse(solver);
             fleet = new FleetService(catalog, store, robots, solver, Clock.systemUTC());
             roster.attach(fleet);
+            DispatchLimit.of(Thread.currentThread().getContextClassLoader()).ifPresent(fleet::limitAtOnce);
             java.util.Optional<ChargingPolicy> charging = ChargingPolicy.of(Thread.currentThread().getContextClassLoader());
             if (charging.isPresent()) {
                 try {

@@ -64,7 +64,10 @@ public final class BuildingBenchmark {
                 }
                 Thread.sleep(100);
             }
-            try (TriadService s = TriadService.start(new TriadService.Options(models, List.of("vda5050:" + broker.url() + ",wait=30"), null,
+            // traffic control's wait bound runs on the wall clock: 120 simulated s is 120 / speed wall s (the default, 120 wall
+            // s, was 20 simulated minutes at 10x, so a task whose drives kept timing out took hours of simulated time to end)
+            String spec = String.format(Locale.ROOT, "vda5050:%s,wait=30,traffic=%.1f", broker.url(), 120 / speed);
+            try (TriadService s = TriadService.start(new TriadService.Options(models, List.of(spec), null,
                     dir.resolve("db"), null, "127.0.0.1", 0, Map.of(AccessTokens.SUBMIT_ENV, "bench-submit", AccessTokens.OPERATOR_ENV, "bench-operator")))) {
                 System.out.printf(Locale.ROOT, "fleet: %d robots joined%n", s.fleet().robots().size());
                 double[] cpu0 = { cpuSeconds(broker.pid()), cpuSeconds(building.pid()), cpuSeconds(ProcessHandle.current().pid()) };

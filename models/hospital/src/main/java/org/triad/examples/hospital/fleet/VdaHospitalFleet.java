@@ -115,7 +115,9 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
                 : new TrafficControl(HospitalTraffic.map(new HospitalFloor()), trafficBound, line -> System.err.println("triad serve: " + line));
         if (traffic != null && context instanceof BuildingContext building) {
             building.traffic().add(traffic::waiting); // the operator page's "Waiting for traffic"
-            building.traffic().addCosts(traffic.congestion(SECONDS_PER_MOVE)); // the planner prices moves by their expected wait
+            org.triad.runtime.schema.ActionCosts congestion = traffic.congestion(SECONDS_PER_MOVE);
+            building.traffic().addCosts(congestion); // the planner prices moves by their expected wait
+            building.traffic().addCosts(leadingAPerson(congestion));
         }
         AutoCloseable doors = traffic == null ? null : keepDoors(master, traffic);
         DeviceWatch watch = new DeviceWatch(DeviceLink.over(master.link(), line -> System.err.println("triad serve: " + line)));
@@ -194,6 +196,33 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
 
     /** How long a courier may wait for a lane, a door or a corridor before its move fails with the reason (RefArc re-plans). */
     static final double TRAFFIC_WAIT_SECONDS = 120;
+
+    /**
+     * One step more for an action that takes a person along (the courier's {@code guide}, the building's {@code walk}): with
+     * it free, a plan for {@code GoTo(storage)} from the lobby guided Alice out of it as readily as it drove (the same
+     * number of steps), and the service's mixed benchmark sent six couriers in a row to lead Alice, whom another task
+     * held, out of the lobby (each failed {@code PERSON_LOST}: she was 13 to 20 m away with the courier guiding her). A
+     * person is led only where a goal needs it.
+     */
+    static final org.triad.runtime.schema.ActionCosts LEADING_A_PERSON = action -> action.args().stream()
+            .anyMatch(a -> a instanceof org.triad.runtime.app.DomainObject o && HospitalFloor.PEOPLE.containsKey(o.name())) ? 1 : 0;
+
+    /**
+     * {@link #LEADING_A_PERSON}, and the congestion of the edge a guide or walk drives (its last two arguments), as a move
+     * along it would cost: congestion prices actions of two waypoints only, so a guide along a congested edge came out
+     * cheaper than the move (the benchmark's second run planned {@code guide(alice, c6, c5)} for a patrol).
+     */
+    static org.triad.runtime.schema.ActionCosts leadingAPerson(org.triad.runtime.schema.ActionCosts congestion) {
+        return action -> {
+            double person = LEADING_A_PERSON.extra(action);
+            if (person == 0 || action.args().size() < 3) {
+                return person;
+            }
+            List<Object> edge = action.args().subList(action.args().size() - 2, action.args().size());
+            return person + congestion.extra(new org.triad.runtime.app.GroundAction(action.actor(), "move", edge));
+        };
+    }
+
     /** A move's typical time (one model edge at the couriers' speed): the unit congestion costs count expected waits in. */
     static final double SECONDS_PER_MOVE = 10;
 
