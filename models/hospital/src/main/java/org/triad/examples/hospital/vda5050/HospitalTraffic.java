@@ -43,13 +43,10 @@ public final class HospitalTraffic {
     /** The zone of every place out of the lobby (corridors, rooms, the lift, the upper floor): see {@link #ADMITTED}. */
     public static final String OUT_OF_THE_LOBBY = "outOfTheLobby";
     /**
-     * Robots admitted out of the lobby at once (system property {@code traffic.admitted}, default 8): the rest wait in the
-     * lobby, a hall for many, for one to come back. The ground floor's ring has 8 places for one; with every courier out
-     * of the lobby (10 of them, and 17 or more of 20 fill every place out of it), it filled and only turned through
-     * refusals (building/README.md, the dyn4j benchmark's cause 4). A robot already out never waits for the zone (it holds
-     * it), so a robot in a room always comes out, unlike an admission to the ring alone (session 11: 0 tasks in 20 minutes).
+     * Robots admitted out of the lobby at once, or 0 for no limit (system property {@code traffic.admitted}; none by default):
+     * the rest wait in the lobby, a hall for many, for one to come back. See {@link #map(HospitalFloor, int)}.
      */
-    public static final int ADMITTED = Integer.getInteger("traffic.admitted", 8);
+    public static final int ADMITTED = Integer.getInteger("traffic.admitted", 0);
     /** The prefix of the zone of a waypoint that another lane's way runs over (e.g. {@code passing-c0}). */
     public static final String PASSING = "passing-";
     /** Two couriers touch at 0.6 m between their centres: a lane passing nearer a waypoint than that passes through it. */
@@ -58,7 +55,20 @@ public final class HospitalTraffic {
     private HospitalTraffic() {
     }
 
+    /** The map with {@link #ADMITTED} robots admitted out of the lobby (no limit unless the property says so). */
     public static TrafficMap map(HospitalFloor floor) {
+        return map(floor, ADMITTED);
+    }
+
+    /**
+     * The map; with {@code admitted > 0} a zone {@value #OUT_OF_THE_LOBBY} over every model waypoint but the lobby and the
+     * lanes between them, for that many robots. The ground floor's ring has 8 places for one; with every courier out of the
+     * lobby it filled (10 couriers) and only turned through refusals, and 17 or more of 20 fill every place out of it
+     * (building/README.md, the dyn4j benchmark). A robot already out holds the zone, so it never waits for it (a robot in a
+     * room always comes out, unlike an admission to the ring alone: session 11, 0 tasks in 20 minutes); only a robot leaving
+     * the lobby waits there for it.
+     */
+    public static TrafficMap map(HospitalFloor floor, int admitted) {
         TrafficMap.Builder b = TrafficMap.builder();
         for (String c : HospitalFloor.CORRIDOR_WAYPOINTS) {
             b.node(c, JUNCTION);
@@ -154,7 +164,9 @@ public final class HospitalTraffic {
                 out.add(e);
             }
         }
-        b.area(Kind.ZONE, OUT_OF_THE_LOBBY, ADMITTED, out.toArray(String[]::new));
+        if (admitted > 0) {
+            b.area(Kind.ZONE, OUT_OF_THE_LOBBY, admitted, out.toArray(String[]::new));
+        }
         doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
         corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
         return b.build();

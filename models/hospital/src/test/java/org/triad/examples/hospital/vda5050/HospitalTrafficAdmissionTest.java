@@ -16,7 +16,7 @@ import org.triad.building.traffic.TrafficMap;
 import org.triad.examples.hospital.HospitalFloor;
 
 /**
- * The hospital's admission out of the lobby ({@link HospitalTraffic#ADMITTED}), on the table alone (no broker): with as many
+ * The hospital's admission out of the lobby ({@link HospitalTraffic#ADMITTED}), on the table alone (no broker), opt-in ({@code -Dtraffic.admitted=N}): with as many
  * robots out as admitted, a robot leaving the lobby waits there, robots out of the lobby still move (a robot in a room comes
  * out), and the one waiting goes as soon as one comes back.
  */
@@ -35,18 +35,20 @@ class HospitalTrafficAdmissionTest {
 
     @Test
     void aRobotLeavesTheLobbyOnlyWhileFewerThanTheAdmittedAreOutAndThoseOutAlwaysMove() {
-        TrafficMap map = HospitalTraffic.map(new HospitalFloor());
+        int admitted = 8;
+        TrafficMap map = HospitalTraffic.map(new HospitalFloor(), admitted);
         Resource out = map.area(HospitalTraffic.OUT_OF_THE_LOBBY).orElseThrow();
-        assertEquals(HospitalTraffic.ADMITTED, out.capacity());
+        assertEquals(admitted, out.capacity());
+        assertTrue(HospitalTraffic.map(new HospitalFloor(), 0).area(HospitalTraffic.OUT_OF_THE_LOBBY).isEmpty(), "no limit: no zone");
         ReservationTable t = new ReservationTable(map, () -> now[0]);
         List<String> places = List.of("storage", "xray", "ward1", "ward3", "ward2", "pharmacy", "d2", "ward4", "c5", "c6");
-        for (int i = 0; i < HospitalTraffic.ADMITTED; i++) {
+        for (int i = 0; i < admitted; i++) {
             t.place("r" + i, places.get(i));
         }
         t.place("lobby-1", HospitalFloor.ROBOT_START);
         Waiting w = assertInstanceOf(Waiting.class, t.request("lobby-1", List.of("lobby", "c4", "c5")));
         assertTrue(w.queued().blocking().contains(out), w.queued().reason());
-        assertEquals(HospitalTraffic.ADMITTED, t.holders(out).size());
+        assertEquals(admitted, t.holders(out).size());
 
         // out of the lobby, robots come out of their rooms and drive on: they hold the zone already
         Granted fromWard3 = assertInstanceOf(Granted.class, t.request("r3", List.of("ward3", "c5", "c6")));
@@ -71,6 +73,6 @@ class HospitalTrafficAdmissionTest {
         assertEquals("lobby", t.decisionPoint("r0"));
         assertTrue(g != null, "lobby-1 is admitted as r0 is back in the lobby");
         assertEquals(List.of("lobby", "c4"), g.stretch());
-        assertEquals(HospitalTraffic.ADMITTED, t.holders(out).size());
+        assertEquals(admitted, t.holders(out).size());
     }
 }
