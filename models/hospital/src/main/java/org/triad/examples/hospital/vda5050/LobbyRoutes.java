@@ -75,6 +75,50 @@ public final class LobbyRoutes {
     }
 
     /**
+     * The way from {@code from} to a free parking spot in the lobby (fewest edges on the traffic map, through the hall's
+     * centre, never through the lift), or empty when every spot is taken or there is no way.
+     */
+    public List<String> toParking(String robot, String from) {
+        Optional<String> spot = freeSpot(robot);
+        if (spot.isEmpty()) {
+            return List.of();
+        }
+        List<String> way = traffic.read(t -> {
+            org.triad.building.traffic.TrafficMap map = t.map();
+            Map<String, String> previous = new LinkedHashMap<>();
+            java.util.ArrayDeque<String> open = new java.util.ArrayDeque<>(List.of(from));
+            previous.put(from, from);
+            while (!open.isEmpty()) {
+                String x = open.poll();
+                if (x.equals(LobbyParking.HALL)) {
+                    break;
+                }
+                for (String y : new java.util.TreeSet<>(map.neighbours(x))) {
+                    boolean lift = map.step(x, y).stream().anyMatch(r -> r.kind() == org.triad.building.traffic.Resource.Kind.LIFT);
+                    if (!lift && previous.putIfAbsent(y, x) == null) {
+                        open.add(y);
+                    }
+                }
+            }
+            if (!previous.containsKey(LobbyParking.HALL)) {
+                return List.of();
+            }
+            List<String> path = new ArrayList<>();
+            for (String x = LobbyParking.HALL; !x.equals(from); x = previous.get(x)) {
+                path.add(0, x);
+            }
+            path.add(0, from);
+            return path;
+        });
+        if (way.isEmpty()) {
+            return List.of();
+        }
+        List<String> r = new ArrayList<>(way);
+        r.add(spot.get());
+        return r;
+    }
+
+    /**
      * {@code action} (or null) along the route's models' edge {@code src -> dst}; the lanes of the lobby's parking before
      * and after it are plain drives.
      */
