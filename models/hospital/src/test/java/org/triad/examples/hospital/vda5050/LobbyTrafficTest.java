@@ -114,6 +114,14 @@ class LobbyTrafficTest {
     }
 
     @Test
+    void aCourierArrivingParksOnASpotWithNobodyBesideIt() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        traffic.place("courier-1", "lobby.1");
+        String spot = LobbyRoutes.of(traffic).freeSpot("courier-2").orElseThrow();
+        assertFalse(LobbyParking.besideTaken(spot, "lobby.1"::equals), spot + " is beside courier-1's lobby.1");
+    }
+
+    @Test
     void whenEverySpotIsTakenAMoveIntoTheLobbyEndsInTheHall() {
         TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
         List<String> spots = new ArrayList<>(LobbyParking.spots());
