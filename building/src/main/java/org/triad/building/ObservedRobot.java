@@ -102,6 +102,12 @@ final class ObservedRobot implements FleetRobot, BuildingMember {
         return robot.battery();
     }
 
+    /** The platform's own way out of the others' way (an observed robot moves as its platform does). */
+    @Override
+    public Optional<String> parkOutOfTheWay() {
+        return robot.parkOutOfTheWay();
+    }
+
     @Override
     public void close() {
         robot.close();

@@ -95,6 +95,35 @@ class SharedWorldTest {
     }
 
     @Test
+    void aRobotOfTheBuildingParksOutOfTheWayAsItsPlatformDoes() {
+        SharedWorld world = new SharedWorld(schema, morning);
+        DryRunWorld platform = new DryRunWorld(schema, morning);
+        FleetRobot own = new FleetRobot() {
+            @Override
+            public String name() {
+                return "p1";
+            }
+
+            @Override
+            public StateSource stateSource() {
+                return platform;
+            }
+
+            @Override
+            public ActionRunner actionRunner() {
+                return platform;
+            }
+
+            @Override
+            public java.util.Optional<String> parkOutOfTheWay() {
+                return java.util.Optional.of("parked out of the way: c4 -> lobby -> lobby.3");
+            }
+        };
+        // the wrapper used to answer with FleetRobot's default (stays): the benchmark's couriers never parked
+        assertEquals(java.util.Optional.of("parked out of the way: c4 -> lobby -> lobby.3"), world.observing(own).parkOutOfTheWay());
+    }
+
+    @Test
     void whatAPlatformReportsChangedWhileItsRobotActedIsWrittenIntoTheBuilding() throws Exception {
         SharedWorld world = new SharedWorld(schema, morning);
         DryRunWorld platform = new DryRunWorld(schema, morning); // a platform with a world view of its own

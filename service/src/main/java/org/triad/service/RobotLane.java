@@ -140,8 +140,11 @@ final class RobotLane implements AutoCloseable {
     }
 
     boolean idle() {
-        return currentTask == null;
+        return currentTask == null && !parking;
     }
+
+    /** Whether the robot drives out of the others' way after its last task (see {@link #finished}): not idle meanwhile. */
+    private volatile boolean parking;
 
     Optional<Long> currentTask() {
         return Optional.ofNullable(currentTask);
@@ -207,6 +210,20 @@ final class RobotLane implements AutoCloseable {
             stopAborts = false;
             plan = List.of();
             step = 0;
+            // a robot left standing where the others pass (a task that congestion ended) gets out of their way before
+            // it takes the next task or rests: it is not idle meanwhile, so no task is given to it while it drives
+            parking = true;
+            Thread park = new Thread(() -> {
+                try {
+                    robot.parkOutOfTheWay().ifPresent(line -> System.err.println("triad serve: " + name() + ": " + line));
+                } catch (RuntimeException e) {
+                    System.err.println("triad serve: " + name() + ": parking out of the way failed: " + e);
+                } finally {
+                    parking = false;
+                }
+            }, "park-" + name());
+            park.setDaemon(true);
+            park.start();
         }
     }
 

@@ -50,6 +50,15 @@ public interface FleetRobot extends AutoCloseable {
         return false;
     }
 
+    /**
+     * Called when the robot's task ended, before it takes another, on a thread of its own (blocking): a robot that stands
+     * where the others must pass (a corridor junction) drives off to a place out of their way. Says where it went or why
+     * it could not; empty when it stays where it is (the default).
+     */
+    default Optional<String> parkOutOfTheWay() {
+        return Optional.empty();
+    }
+
     /** Releases the connection or simulation; the default does nothing. */
     @Override
     default void close() {

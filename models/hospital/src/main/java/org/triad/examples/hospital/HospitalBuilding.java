@@ -24,7 +24,7 @@ import org.triad.sim.Vec2;
  * charge per metre driven, the models' {@code Courier.drain()}) that charges at the lobby's dock (500 W; the models'
  * dock {@value #DOCK}, on the spot {@link LobbyParking#DOCK} off the way out). A courier alone starts at the lobby's
  * waypoint, as {@link HospitalSimulation}'s; of several, the first starts on the dock, the
- * next 16 on the lobby's parking spots ({@link LobbyParking}, each with a clear way out), then in two columns along the
+ * next 14 on the lobby's parking spots ({@link LobbyParking}, each with a clear way out), then in two columns along the
  * walls of ward 3, ward 2, storage, x-ray and ward 1 (24 spots a room), one room after the other in turn.
  *
  * <p>Script the building ({@code sim().at(40).closeDoor(...)}) before {@link #start(double)}; afterwards the clock

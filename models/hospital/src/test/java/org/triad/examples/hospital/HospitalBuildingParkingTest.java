@@ -32,20 +32,28 @@ class HospitalBuildingParkingTest {
     }
 
     @Test
-    void twentyCouriersStartSeventeenInTheLobbyTheFirstOnTheDockThenOneEachInWard3Ward2AndStorage() {
+    void nobodyParksWithinReachOfTheDock() {
+        assertTrue(LobbyParking.spots().stream().noneMatch(s -> LobbyParking.besideTaken(LobbyParking.DOCK, s::equals)),
+                "a courier arriving at the dock never stops short of it for one parked beside it");
+        assertTrue(LobbyParking.besideTaken("lobby.1", "lobby.2"::equals), "lobby.1 and lobby.2 stand 0.95 m apart");
+    }
+
+    @Test
+    void twentyCouriersStartFifteenInTheLobbyTheFirstOnTheDockThenOneToARoomInTurn() {
         List<String> names = new ArrayList<>();
         for (int i = 1; i <= 20; i++) {
             names.add("courier-" + i);
         }
         HospitalBuilding building = new HospitalBuilding(1, false, names);
-        assertEquals(17, HospitalBuilding.LOBBY_SPOTS.size());
+        assertEquals(15, HospitalBuilding.LOBBY_SPOTS.size());
         List<String> places = List.copyOf(LobbyParking.places().keySet());
         assertEquals(LobbyParking.DOCK, places.get(0));
         for (int i = 0; i < names.size(); i++) {
             Vec2 at = building.sim().robot(names.get(i)).position();
-            String room = i < 17 ? "lobby" : List.of("ward3", "ward2", "storage").get(i - 17);
+            List<String> rooms = List.of("ward3", "ward2", "storage", "xray", "ward1");
+            String room = i < 15 ? "lobby" : rooms.get((i - 15) % rooms.size());
             assertEquals(room, building.floor().waypointAt(at), names.get(i) + " starts in " + room);
-            if (i < 17) {
+            if (i < 15) {
                 assertEquals(java.util.Optional.of(places.get(i)), LobbyParking.placeAt(at), names.get(i) + " at " + at + " stands on " + places.get(i));
             }
         }

@@ -415,6 +415,12 @@ public final class VdaHospitalFleet implements RobotPlatformProvider {
         private final RemoteAgv agv;
         private final VdaHospital hospital;
 
+        /** Off the ground floor's corridor into the lobby when its task left it on a junction ({@link org.triad.examples.hospital.vda5050.VdaCourier#parkOutOfTheWay}). */
+        @Override
+        public Optional<String> parkOutOfTheWay() {
+            return hospital.courier().parkOutOfTheWay();
+        }
+
         Courier(String name, VdaHospital agv, Runnable onClose) {
             this.name = name;
             this.hospital = agv;

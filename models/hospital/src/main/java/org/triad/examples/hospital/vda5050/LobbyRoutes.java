@@ -75,6 +75,50 @@ public final class LobbyRoutes {
     }
 
     /**
+     * The way from {@code from} to a free parking spot in the lobby (fewest edges on the traffic map, through the hall's
+     * centre, never through the lift), or empty when every spot is taken or there is no way.
+     */
+    public List<String> toParking(String robot, String from) {
+        Optional<String> spot = freeSpot(robot);
+        if (spot.isEmpty()) {
+            return List.of();
+        }
+        List<String> way = traffic.read(t -> {
+            org.triad.building.traffic.TrafficMap map = t.map();
+            Map<String, String> previous = new LinkedHashMap<>();
+            java.util.ArrayDeque<String> open = new java.util.ArrayDeque<>(List.of(from));
+            previous.put(from, from);
+            while (!open.isEmpty()) {
+                String x = open.poll();
+                if (x.equals(LobbyParking.HALL)) {
+                    break;
+                }
+                for (String y : new java.util.TreeSet<>(map.neighbours(x))) {
+                    boolean lift = map.step(x, y).stream().anyMatch(r -> r.kind() == org.triad.building.traffic.Resource.Kind.LIFT);
+                    if (!lift && previous.putIfAbsent(y, x) == null) {
+                        open.add(y);
+                    }
+                }
+            }
+            if (!previous.containsKey(LobbyParking.HALL)) {
+                return List.of();
+            }
+            List<String> path = new ArrayList<>();
+            for (String x = LobbyParking.HALL; !x.equals(from); x = previous.get(x)) {
+                path.add(0, x);
+            }
+            path.add(0, from);
+            return path;
+        });
+        if (way.isEmpty()) {
+            return List.of();
+        }
+        List<String> r = new ArrayList<>(way);
+        r.add(spot.get());
+        return r;
+    }
+
+    /**
      * {@code action} (or null) along the route's models' edge {@code src -> dst}; the lanes of the lobby's parking before
      * and after it are plain drives.
      */
@@ -87,20 +131,15 @@ public final class LobbyRoutes {
     }
 
     /**
-     * Where in the lobby the robot parks now: its own spot (given the first time it parks, one robot a spot while they
-     * last) if nobody holds or waits for it, else the first such spot; empty when every spot is taken. Own spots keep two
+     * Where in the lobby the robot parks now: its own spot (the first it was seen on or parked on, one robot a spot while
+     * they last) if nobody holds or waits for it, else the first such spot nobody owns, then any; one with nobody parked
+     * within {@link LobbyParking#APART} first; empty when every spot is taken. Own spots keep two
      * robots that park at once from choosing the same one (the second would wait for the first, parked there for good).
      */
     public Optional<String> freeSpot(String robot) {
         return traffic.read(t -> {
             synchronized (homes) {
                 String home = homes.get(robot);
-                if (home == null) {
-                    home = LobbyParking.spots().stream().filter(s -> !homes.containsValue(s)).findFirst().orElse(null);
-                    if (home != null) {
-                        homes.put(robot, home);
-                    }
-                }
                 // its own spot first, then those nobody owns, then the others' (their owners are elsewhere)
                 List<String> order = new ArrayList<>();
                 if (home != null) {
@@ -108,7 +147,15 @@ public final class LobbyRoutes {
                 }
                 LobbyParking.spots().stream().filter(s -> !homes.containsValue(s)).forEach(order::add);
                 order.addAll(LobbyParking.spots());
-                return order.stream().filter(s -> t.needing(t.map().node(s)).isEmpty()).findFirst();
+                // a spot beside a taken one is the last choice: the simulator's avoidance stops a courier arriving 0.75 m
+                // from a parked one short of its spot (the run that found it: four failed drives to the dock in a row)
+                java.util.function.Predicate<String> taken = s -> !t.needing(t.map().node(s)).isEmpty();
+                List<String> free = order.stream().filter(taken.negate()).toList();
+                Optional<String> choice = free.stream().filter(s -> !LobbyParking.besideTaken(s, taken)).findFirst().or(() -> free.stream().findFirst());
+                if (home == null && choice.isPresent() && !homes.containsValue(choice.get())) {
+                    homes.put(robot, choice.get()); // the first spot it parks on is its own from now on
+                }
+                return choice;
             }
         });
     }

@@ -70,6 +70,28 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return true;
     }
 
+    /** The ground floor's corridor junctions: where the others pass, no place to stand idle. */
+    private static final java.util.Set<String> JUNCTIONS = java.util.Set.of("c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7");
+
+    /**
+     * Off the ground floor's corridor onto a free parking spot in the lobby, a reserved drive, when the courier stands idle
+     * on a junction of it (the fleet calls this when its task ended, before it takes the next): a task that congestion
+     * ended left its courier there, and it stood in the others' way while it rested and until its next task took it
+     * on. Says where it went, or why not; empty when it stays (not on a junction, no traffic control, no free spot).
+     */
+    public Optional<String> parkOutOfTheWay() {
+        String at = reportedNode();
+        if (traffic == null || at == null || !JUNCTIONS.contains(at)) {
+            return Optional.empty();
+        }
+        List<String> route = LobbyRoutes.of(traffic).toParking(agv.name(), at);
+        if (route.size() < 2) {
+            return Optional.empty();
+        }
+        return Optional.of(agv.driveRoute(route, traffic) ? "parked out of the way: " + String.join(" -> ", route)
+                : "could not park out of the way (" + String.join(" -> ", route) + "): " + agv.lastFailure().orElse("?"));
+    }
+
     /** The node the AGV last reported (a lobby's parking spot, where the models see {@code lobby}), or null. */
     private String reportedNode() {
         return agv.state().map(AgvState::lastNodeId).orElse(null);

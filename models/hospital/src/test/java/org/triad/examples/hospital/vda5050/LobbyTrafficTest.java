@@ -100,6 +100,28 @@ class LobbyTrafficTest {
     }
 
     @Test
+    void aCourierLeftOnTheRingParksInTheLobbyByTheFewestEdgesAndNeverThroughTheLift() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        traffic.place("courier-1", "c1");
+        traffic.place("courier-2", "c7");
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        List<String> fromC1 = lobby.toParking("courier-1", "c1");
+        assertEquals(List.of("c1", "c4", "lobby"), fromC1.subList(0, 3));
+        assertTrue(LobbyParking.spots().contains(fromC1.get(3)), fromC1.toString());
+        List<String> fromC7 = lobby.toParking("courier-2", "c7");
+        assertEquals(List.of("c7", "c6", "c5", "c4", "lobby"), fromC7.subList(0, 5), "along the south corridor, not up the lift");
+        assertFalse(fromC7.get(5).equals(fromC1.get(3)), "each its own spot");
+    }
+
+    @Test
+    void aCourierArrivingParksOnASpotWithNobodyBesideIt() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        traffic.place("courier-1", "lobby.1");
+        String spot = LobbyRoutes.of(traffic).freeSpot("courier-2").orElseThrow();
+        assertFalse(LobbyParking.besideTaken(spot, "lobby.1"::equals), spot + " is beside courier-1's lobby.1");
+    }
+
+    @Test
     void whenEverySpotIsTakenAMoveIntoTheLobbyEndsInTheHall() {
         TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
         List<String> spots = new ArrayList<>(LobbyParking.spots());
@@ -107,6 +129,7 @@ class LobbyTrafficTest {
             traffic.place("courier-" + i, spots.get(i));
         }
         assertEquals(Optional.empty(), LobbyRoutes.of(traffic).freeSpot("courier-99"));
+        assertEquals(List.of(), LobbyRoutes.of(traffic).toParking("courier-99", "c4"), "nowhere to park");
         assertEquals(List.of("c4", "lobby"), LobbyRoutes.of(traffic).route("courier-99", "c4", "c4", "lobby"));
     }
 }
