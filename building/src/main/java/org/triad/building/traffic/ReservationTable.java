@@ -375,8 +375,9 @@ public final class ReservationTable {
     }
 
     /**
-     * The waiting requests that the last {@link #request} refused to let its robot through (robots waiting at the door
-     * of a dead end the requester came out of: see rule 3), once; the caller tells those robots.
+     * The waiting requests that the last {@link #request} refused to let its robot through (rule 3's dead-end, guide and
+     * aging cases: a robot at the door of the dead end the requester comes out of, robots in the way of a guide or of a
+     * robot refused more often), once; the caller tells those robots, and they make way.
      */
     public List<Refused> takeDisplaced() {
         List<Refused> d = List.copyOf(displaced);
