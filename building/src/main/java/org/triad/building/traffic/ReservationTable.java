@@ -487,6 +487,21 @@ public final class ReservationTable {
         return regrant();
     }
 
+    /**
+     * Withdraws the robot's waiting request because master control asked it to make way for a robot refused as a
+     * deadlock that had nowhere to step aside to: {@link #cancel}, counted as a refusal of its stretch (its precedence by
+     * aging, see {@link #evictForTheOlder}), as when the table itself withdraws a wait to make way.
+     */
+    public Changes makeWay(String robot) {
+        RobotState s = robot(robot);
+        if (s.pending == null) {
+            return Changes.NONE;
+        }
+        refused(s, s.pending.stretch);
+        withdraw(s);
+        return regrant();
+    }
+
     /** Withdraws the robot's waiting request (it waited too long, or its action was cancelled). */
     public Changes cancel(String robot) {
         RobotState s = robot(robot);

@@ -513,6 +513,12 @@ class ReservationTableTest {
         assertTrue(t.waiting("b").isPresent(), "b keeps its wait");
         assertEquals(2, t.refusals("a"));
         assertEquals(1, t.refusals("b"));
+        // master control asks b to make way (a had nowhere to step aside to): withdrawn and counted like the table's own
+        assertTrue(t.makeWay("b").isEmpty());
+        assertTrue(t.waiting("b").isEmpty());
+        assertEquals(2, t.refusals("b"));
+        assertTrue(t.makeWay("b").isEmpty(), "nothing to withdraw");
+        assertEquals(2, t.refusals("b"), "counted once");
 
         ReservationTable g = table(eastSide());
         g.place("old", "c6");
