@@ -2,6 +2,7 @@ package org.triad.building.traffic;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -64,6 +65,13 @@ public final class ReservationTable {
         Request pending;
         /** Why the robot is lost (its last will), or null while it works. */
         String lost;
+        /**
+         * Rule 3's refusals of this robot (its own requests refused as closing a cycle, and its waits withdrawn to make
+         * way) since it was last granted the step it was refused: its precedence by aging (see {@link #evictForTheOlder}).
+         */
+        int refusals;
+        /** The first step of the stretch it was last refused (from, to), or null: driving it ends the count. */
+        List<String> refusedStep;
 
         RobotState(String name, String position) {
             this.name = name;
@@ -242,8 +250,17 @@ public final class ReservationTable {
             }
             cycle = cycleThrough(q);
         }
+        // nor does a robot refused more often than a waiting one of the cycle: that one does (precedence by aging)
+        while (!cycle.isEmpty() && evictForTheOlder(s, cycle)) {
+            if (fits(q)) {
+                return grant(s, q);
+            }
+            cycle = cycleThrough(q);
+        }
         if (!cycle.isEmpty()) {
-            return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0), cycle);
+            refused(s, stretch);
+            return new Refused(robot, "deadlock avoided: " + describeCycle(cycle, q) + "; " + robot + " does not wait at " + stretch.get(0)
+                    + (s.refusals > 1 ? " (refused " + s.refusals + " times in a row)" : ""), cycle);
         }
         q = q.blockedBy(new LinkedHashSet<>(waitOf(q).blocking()));
         queue.put(q.arrival, q);
@@ -272,6 +289,7 @@ public final class ReservationTable {
                     || b.pending.stretch.size() < 2 || !b.pending.stretch.get(1).equals(room)) {
                 continue;
             }
+            refused(b, b.pending.stretch);
             withdraw(b);
             displaced.add(new Refused(h, "deadlock avoided: " + h + " waits at " + door + " to go into the dead end " + room + ", and "
                     + s.name + " in there can only come out through " + door + "; " + h + " makes way", List.of(h, s.name)));
@@ -296,6 +314,7 @@ public final class ReservationTable {
                 continue;
             }
             String at = b.decisionPoint();
+            refused(b, b.pending.stretch);
             withdraw(b);
             displaced.add(new Refused(h, "deadlock avoided: " + h + " at " + at + " and " + s.name + ", which guides a person, would wait for each other; "
                     + h + " makes way", List.of(h, s.name)));
@@ -304,14 +323,61 @@ public final class ReservationTable {
         return false;
     }
 
+    /**
+     * Rule 3's aging case: the robot's request would close a cycle of waits (the dead-end case, the queue ahead and the
+     * guide case tried first), and a robot of the cycle that waits, guides nobody and was refused fewer times than the
+     * asker (see {@link RobotState#refusals}) is refused instead (the fewest first; its wait withdrawn, a {@link Refused}
+     * naming both, collected for {@link #takeDisplaced}) and makes way. Without it, rule 3 refused whoever closed the
+     * cycle, and a robot coming back to the same single lane was that one every time (the benchmark's courier-3, refused
+     * ten times in a row on c4-c6 until its battery was empty). Ties refuse the asker, as before. Only a wait is
+     * withdrawn, so no wait-for edge is added.
+     *
+     * @return whether a robot of the cycle was refused
+     */
+    private boolean evictForTheOlder(RobotState s, List<String> cycle) {
+        RobotState younger = null;
+        for (String h : cycle) {
+            RobotState b = robots.get(h);
+            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h) || b.refusals >= s.refusals) {
+                continue;
+            }
+            if (younger == null || b.refusals < younger.refusals) {
+                younger = b;
+            }
+        }
+        if (younger == null) {
+            return false;
+        }
+        String at = younger.decisionPoint();
+        int had = younger.refusals;
+        refused(younger, younger.pending.stretch);
+        withdraw(younger);
+        displaced.add(new Refused(younger.name, "deadlock avoided: " + younger.name + " at " + at + " and " + s.name + " would wait for each other; "
+                + s.name + " was refused " + s.refusals + " times since it last got through, " + younger.name + " " + had + "; "
+                + younger.name + " makes way", List.of(younger.name, s.name)));
+        return true;
+    }
+
+    /** Counts a refusal by rule 3 of the robot's stretch (its own request, or its wait withdrawn to make way). */
+    private static void refused(RobotState s, List<String> stretch) {
+        s.refusals++;
+        s.refusedStep = List.copyOf(stretch.subList(0, 2));
+    }
+
+    /** How often rule 3 refused the robot since it was last granted the step it was refused (its precedence by aging). */
+    public int refusals(String robot) {
+        return robot(robot).refusals;
+    }
+
     /** Whether the robot's last request was to guide a person (see {@link #request(String, List, boolean)}). */
     public boolean guiding(String robot) {
         return guides.contains(robot);
     }
 
     /**
-     * The waiting requests that the last {@link #request} refused to let its robot through (robots waiting at the door
-     * of a dead end the requester came out of: see rule 3), once; the caller tells those robots.
+     * The waiting requests that the last {@link #request} refused to let its robot through (rule 3's dead-end, guide and
+     * aging cases: a robot at the door of the dead end the requester comes out of, robots in the way of a guide or of a
+     * robot refused more often), once; the caller tells those robots, and they make way.
      */
     public List<Refused> takeDisplaced() {
         List<Refused> d = List.copyOf(displaced);
@@ -418,6 +484,21 @@ public final class ReservationTable {
         withdraw(s);
         s.base = List.copyOf(s.base.subList(0, at + 1));
         rehold(s);
+        return regrant();
+    }
+
+    /**
+     * Withdraws the robot's waiting request because master control asked it to make way for a robot refused as a
+     * deadlock that had nowhere to step aside to: {@link #cancel}, counted as a refusal of its stretch (its precedence by
+     * aging, see {@link #evictForTheOlder}), as when the table itself withdraws a wait to make way.
+     */
+    public Changes makeWay(String robot) {
+        RobotState s = robot(robot);
+        if (s.pending == null) {
+            return Changes.NONE;
+        }
+        refused(s, s.pending.stretch);
+        withdraw(s);
         return regrant();
     }
 
@@ -748,6 +829,11 @@ public final class ReservationTable {
     }
 
     private Granted grant(RobotState s, Request q) {
+        if (s.refusedStep != null && Collections.indexOfSubList(q.stretch, s.refusedStep) >= 0) {
+            // through where it was refused: its precedence is spent (a step aside, also a grant, does not end it)
+            s.refusals = 0;
+            s.refusedStep = null;
+        }
         List<String> base = new ArrayList<>(s.base);
         base.addAll(q.stretch.subList(1, q.stretch.size()));
         s.base = List.copyOf(base);

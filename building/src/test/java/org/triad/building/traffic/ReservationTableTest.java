@@ -436,4 +436,101 @@ class ReservationTableTest {
         assertTrue(t.takeDisplaced().isEmpty());
         assertTrue(t.waiting("b").isPresent());
     }
+
+    /** c4 - c5 - c6 - c7, one lane, and ward2 off c6: the east side of the hospital's upper floor, where courier-3 starved. */
+    private static TrafficMap eastSide() {
+        return TrafficMap.builder().node("c4").node("c5").node("c6").node("c7").node("ward2")
+                .edge("c4", "c5").edge("c5", "c6").edge("c6", "c7").edge("c6", "ward2").build();
+    }
+
+    /**
+     * The building benchmark's starvation: courier-3, on its way to the dock, refused at c6 as a deadlock head to head
+     * again and again, against one courier after another, stepping aside to ward2 each time, until its battery was
+     * empty. Rule 3 refused whoever closed the cycle. Now the robot refused before has precedence: the next robot it
+     * meets head to head, refused fewer times, makes way instead. A step aside (a grant too) does not spend it; getting
+     * through the step it was refused does.
+     */
+    @Test
+    void aRobotRefusedBeforeWinsTheNextCycleHeadToHeadAndTheOtherIsDisplaced() {
+        ReservationTable t = table(eastSide());
+        t.place("r3", "c6");
+        t.place("r2", "c5");
+        assertInstanceOf(Waiting.class, t.request("r2", route("c5", "c6", "c7")));
+        Refused first = assertInstanceOf(Refused.class, t.request("r3", route("c6", "c5", "c4")), "tied at 0: the asker is refused as before");
+        assertEquals(List.of("r3", "r2"), first.cycle());
+        assertEquals(1, t.refusals("r3"));
+        assertEquals(0, t.refusals("r2"));
+        assertTrue(t.takeDisplaced().isEmpty());
+
+        // r3 steps aside to ward2; r2 passes on to c7
+        assertInstanceOf(Granted.class, t.request("r3", route("c6", "ward2")));
+        assertEquals(List.of("r2"), driveBase(t, "r3").granted().stream().map(Granted::robot).toList());
+        driveBase(t, "r2");
+        assertInstanceOf(Granted.class, t.request("r2", route("c6", "c7")));
+        driveBase(t, "r2");
+        assertEquals(1, t.refusals("r3"), "a step aside is a grant, but not through where it was refused");
+
+        // back to c6, and r4 comes up the lane from c4 to c5 and waits for c6: head to head again
+        assertInstanceOf(Granted.class, t.request("r3", route("ward2", "c6", "c5", "c4")));
+        driveBase(t, "r3");
+        assertEquals(1, t.refusals("r3"));
+        t.place("r4", "c4");
+        assertInstanceOf(Granted.class, t.request("r4", route("c4", "c5", "c6", "c7")));
+        driveBase(t, "r4");
+        assertInstanceOf(Waiting.class, t.request("r4", route("c5", "c6", "c7")));
+        Waiting w3 = assertInstanceOf(Waiting.class, t.request("r3", route("c6", "c5", "c4")), "refused once before, r3 is not refused again");
+        assertEquals(List.of("r4"), w3.queued().blockers(), "it waits for r4 to leave c5");
+        List<Refused> displaced = t.takeDisplaced();
+        assertEquals(1, displaced.size());
+        assertEquals("r4", displaced.get(0).robot());
+        assertEquals(List.of("r4", "r3"), displaced.get(0).cycle());
+        assertTrue(displaced.get(0).reason().contains("r3 was refused 1 times since it last got through, r4 0; r4 makes way"),
+                displaced.get(0).reason());
+        assertTrue(t.waiting("r4").isEmpty(), "r4's wait is withdrawn");
+        assertEquals(1, t.refusals("r4"), "being displaced counts as a refusal");
+        assertEquals(Set.of(), Graphs.cycle(t.waitsFor()), "no wait-for cycle is left");
+
+        // r4 makes way back to c4; r3 gets c5, through where it was refused: its count ends
+        assertInstanceOf(Granted.class, t.request("r4", route("c5", "c4")));
+        Changes c = driveBase(t, "r4");
+        assertEquals(List.of("r3"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(0, t.refusals("r3"));
+    }
+
+    /** Equal counts refuse the asker as before, so two robots that stay where they are take turns; a guide is never displaced by age. */
+    @Test
+    void tiesRefuseTheAskerAndAGuideIsNotDisplacedByAge() {
+        ReservationTable t = table(eastSide());
+        t.place("a", "c6");
+        t.place("b", "c5");
+        assertInstanceOf(Waiting.class, t.request("a", route("c6", "c5", "c4")));
+        assertInstanceOf(Refused.class, t.request("b", route("c5", "c6", "c7")), "0 against 0: the asker");
+        assertInstanceOf(Waiting.class, t.request("b", route("c5", "c6", "c7")), "1 against 0: a makes way");
+        assertEquals(List.of("a"), t.takeDisplaced().stream().map(Refused::robot).toList());
+        Refused tie = assertInstanceOf(Refused.class, t.request("a", route("c6", "c5", "c4")), "1 against 1: the asker");
+        assertEquals(List.of("a", "b"), tie.cycle());
+        assertTrue(t.takeDisplaced().isEmpty());
+        assertTrue(t.waiting("b").isPresent(), "b keeps its wait");
+        assertEquals(2, t.refusals("a"));
+        assertEquals(1, t.refusals("b"));
+        // master control asks b to make way (a had nowhere to step aside to): withdrawn and counted like the table's own
+        assertTrue(t.makeWay("b").isEmpty());
+        assertTrue(t.waiting("b").isEmpty());
+        assertEquals(2, t.refusals("b"));
+        assertTrue(t.makeWay("b").isEmpty(), "nothing to withdraw");
+        assertEquals(2, t.refusals("b"), "counted once");
+
+        ReservationTable g = table(eastSide());
+        g.place("old", "c6");
+        g.place("guide", "c5");
+        assertInstanceOf(Waiting.class, g.request("old", route("c6", "c5", "c4")));
+        assertInstanceOf(Waiting.class, g.request("guide", route("c5", "c6", "c7"), true), "the guide case: old makes way");
+        assertEquals(List.of("old"), g.takeDisplaced().stream().map(Refused::robot).toList());
+        assertEquals(1, g.refusals("old"));
+        assertEquals(0, g.refusals("guide"));
+        Refused byGuide = assertInstanceOf(Refused.class, g.request("old", route("c6", "c5", "c4")), "refused before, but the guide does not make way");
+        assertEquals(List.of("old", "guide"), byGuide.cycle());
+        assertTrue(g.takeDisplaced().isEmpty());
+        assertTrue(g.waiting("guide").isPresent());
+    }
 }

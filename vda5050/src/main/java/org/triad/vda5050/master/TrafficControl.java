@@ -145,7 +145,7 @@ public final class TrafficControl {
         if (!makingWay.remove(robot) || table.waiting(robot).isEmpty()) {
             return false;
         }
-        deliver(table.cancel(robot));
+        deliver(table.makeWay(robot)); // counted: a robot asked again and again gains precedence (rule 3's aging case)
         return true;
     }
 
