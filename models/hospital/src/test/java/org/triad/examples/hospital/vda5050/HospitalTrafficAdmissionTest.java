@@ -14,6 +14,7 @@ import org.triad.building.traffic.ReservationTable.Changes;
 import org.triad.building.traffic.Resource;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.LobbyParking;
 
 /**
  * The hospital's admission out of the lobby ({@link HospitalTraffic#ADMITTED}), on the table alone (no broker), opt-in ({@code -Dtraffic.admitted=N}): with as many
@@ -45,8 +46,9 @@ class HospitalTrafficAdmissionTest {
         for (int i = 0; i < admitted; i++) {
             t.place("r" + i, places.get(i));
         }
-        t.place("lobby-1", HospitalFloor.ROBOT_START);
-        Waiting w = assertInstanceOf(Waiting.class, t.request("lobby-1", List.of("lobby", "c4", "c5")));
+        String spot = LobbyParking.spots().get(0);
+        t.place("lobby-1", spot);
+        Waiting w = assertInstanceOf(Waiting.class, t.request("lobby-1", List.of(spot, "lobby", "c4", "c5")));
         assertTrue(w.queued().blocking().contains(out), w.queued().reason());
         assertEquals(admitted, t.holders(out).size());
 
@@ -55,13 +57,15 @@ class HospitalTrafficAdmissionTest {
         assertEquals(List.of("ward3", "c5"), fromWard3.stretch());
         driveBase(t, "r3");
 
-        // r0 comes back from the storage room to the lobby (the dock): it goes ahead of the waiting one, whose way it is in,
+        // r0 comes back from the storage room to a spot in the lobby: it goes ahead of the waiting one, whose way it is in,
         // and once it is in the lobby the waiting one is admitted
-        assertInstanceOf(Granted.class, t.request("r0", List.of("storage", "c1", "c0", "c4", "lobby")));
+        String home = LobbyParking.spots().get(1);
+        List<String> back = List.of("storage", "c1", "c0", "c4", "lobby", home);
+        assertInstanceOf(Granted.class, t.request("r0", back));
         driveBase(t, "r0");
         Granted g = null;
-        for (int i = 0; i < 3 && !t.base("r0").get(t.base("r0").size() - 1).equals("lobby"); i++) {
-            List<String> rest = List.of("storage", "c1", "c0", "c4", "lobby");
+        for (int i = 0; i < 3 && !t.base("r0").get(t.base("r0").size() - 1).equals(home); i++) {
+            List<String> rest = back;
             String at = t.decisionPoint("r0");
             assertInstanceOf(Granted.class, t.request("r0", rest.subList(rest.indexOf(at), rest.size())));
             for (Granted x : driveBase(t, "r0")) {
@@ -70,9 +74,9 @@ class HospitalTrafficAdmissionTest {
                 }
             }
         }
-        assertEquals("lobby", t.decisionPoint("r0"));
+        assertEquals(home, t.decisionPoint("r0"));
         assertTrue(g != null, "lobby-1 is admitted as r0 is back in the lobby");
-        assertEquals(List.of("lobby", "c4"), g.stretch());
+        assertEquals(List.of(spot, "lobby", "c4"), g.stretch());
         assertEquals(admitted, t.holders(out).size());
     }
 }
