@@ -67,11 +67,14 @@ public final class ReservationTable {
         String lost;
         /**
          * Rule 3's refusals of this robot (its own requests refused as closing a cycle, and its waits withdrawn to make
-         * way) since it was last granted the step it was refused: its precedence by aging (see {@link #evictForTheOlder}).
+         * way) since it last got through: granted the step it was last refused and then the rest of that drive to its
+         * end. Its precedence by aging (see {@link #evictForTheOlder}).
          */
         int refusals;
-        /** The first step of the stretch it was last refused (from, to), or null: driving it ends the count. */
+        /** The first step of the stretch it was last refused (from, to), or null. */
         List<String> refusedStep;
+        /** Whether it was granted {@link #refusedStep} since: the count ends when a grant then reaches its route's end. */
+        boolean through;
 
         RobotState(String name, String position) {
             this.name = name;
@@ -362,9 +365,10 @@ public final class ReservationTable {
     private static void refused(RobotState s, List<String> stretch) {
         s.refusals++;
         s.refusedStep = List.copyOf(stretch.subList(0, 2));
+        s.through = false;
     }
 
-    /** How often rule 3 refused the robot since it was last granted the step it was refused (its precedence by aging). */
+    /** How often rule 3 refused the robot since it last got through (its precedence by aging, see {@link RobotState#refusals}). */
     public int refusals(String robot) {
         return robot(robot).refusals;
     }
@@ -830,9 +834,15 @@ public final class ReservationTable {
 
     private Granted grant(RobotState s, Request q) {
         if (s.refusedStep != null && Collections.indexOfSubList(q.stretch, s.refusedStep) >= 0) {
-            // through where it was refused: its precedence is spent (a step aside, also a grant, does not end it)
+            s.through = true;
+        }
+        if (s.through && q.horizon.size() <= 1) {
+            // through where it was refused and on to the end of that drive: its precedence is spent (a step aside, also
+            // a grant to a route's end, does not end it; nor does getting through one place of a drive only to meet the
+            // next robot at the next one, as the benchmark's courier-3 did on its way to the dock)
             s.refusals = 0;
             s.refusedStep = null;
+            s.through = false;
         }
         List<String> base = new ArrayList<>(s.base);
         base.addAll(q.stretch.subList(1, q.stretch.size()));

@@ -490,10 +490,15 @@ class ReservationTableTest {
         assertEquals(1, t.refusals("r4"), "being displaced counts as a refusal");
         assertEquals(Set.of(), Graphs.cycle(t.waitsFor()), "no wait-for cycle is left");
 
-        // r4 makes way back to c4; r3 gets c5, through where it was refused: its count ends
+        // r4 makes way back to c4 and on (off the lane); r3 gets c5, through where it was refused, and on to c4, the end of
+        // its drive: only then its count ends
         assertInstanceOf(Granted.class, t.request("r4", route("c5", "c4")));
         Changes c = driveBase(t, "r4");
         assertEquals(List.of("r3"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(1, t.refusals("r3"), "through c6-c5, not yet at the end of its drive");
+        t.remove("r4");
+        driveBase(t, "r3");
+        assertInstanceOf(Granted.class, t.request("r3", route("c5", "c4")));
         assertEquals(0, t.refusals("r3"));
     }
 
