@@ -332,8 +332,8 @@ public final class ReservationTable {
      * asker (see {@link RobotState#refusals}) is refused instead (the fewest first; its wait withdrawn, a {@link Refused}
      * naming both, collected for {@link #takeDisplaced}) and makes way. Without it, rule 3 refused whoever closed the
      * cycle, and a robot coming back to the same single lane was that one every time (the benchmark's courier-3, refused
-     * ten times in a row on c4-c6 until its battery was empty). Ties refuse the asker, as before. Only a wait is
-     * withdrawn, so no wait-for edge is added.
+     * ten times in a row on c4-c6 until its battery was empty). Ties refuse the asker, as before, and so does a cycle
+     * whose younger robots all wait in a dead end. Only a wait is withdrawn, so no wait-for edge is added.
      *
      * @return whether a robot of the cycle was refused
      */
@@ -342,6 +342,12 @@ public final class ReservationTable {
         for (String h : cycle) {
             RobotState b = robots.get(h);
             if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h) || b.refusals >= s.refusals) {
+                continue;
+            }
+            if (map.neighbours(b.decisionPoint()).size() == 1) {
+                // it waits in a dead end (the dock): it can only come out, so making way there is the asker's to do
+                // (in the 5-courier run the one at the dock was displaced, had nowhere to go, and master control then
+                // asked the asker to make way after all, round after round, until the asker's battery was empty)
                 continue;
             }
             if (younger == null || b.refusals < younger.refusals) {

@@ -538,4 +538,28 @@ class ReservationTableTest {
         assertTrue(g.takeDisplaced().isEmpty());
         assertTrue(g.waiting("guide").isPresent());
     }
+
+    /**
+     * The dock in the 5-courier run: the robot waiting in a dead end to come out cannot make way, so an older asker at its
+     * door is refused as before (the dead end's robot was displaced, had nowhere to go, and the asker was asked to make
+     * way after all, round after round).
+     */
+    @Test
+    void aRobotWaitingInADeadEndIsNotDisplacedByAge() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c4").node("lobby").node("dock")
+                .edge("c0", "c4").edge("c4", "lobby").edge("lobby", "dock").build();
+        ReservationTable t = table(map);
+        t.place("old", "lobby");
+        t.place("x", "c4");
+        assertInstanceOf(Waiting.class, t.request("x", route("c4", "lobby", "dock")));
+        assertInstanceOf(Refused.class, t.request("old", route("lobby", "c4", "c0")), "head to head: old is refused once");
+        t.remove("x");
+        assertEquals(1, t.refusals("old"));
+        t.place("docked", "dock");
+        assertInstanceOf(Waiting.class, t.request("docked", route("dock", "lobby", "c4", "c0")));
+        Refused r = assertInstanceOf(Refused.class, t.request("old", route("lobby", "dock")), "older, but docked has nowhere to go");
+        assertEquals(List.of("old", "docked"), r.cycle());
+        assertTrue(t.takeDisplaced().isEmpty());
+        assertTrue(t.waiting("docked").isPresent());
+    }
 }
