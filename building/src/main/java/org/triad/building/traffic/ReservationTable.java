@@ -67,11 +67,14 @@ public final class ReservationTable {
         String lost;
         /**
          * Rule 3's refusals of this robot (its own requests refused as closing a cycle, and its waits withdrawn to make
-         * way) since it was last granted the step it was refused: its precedence by aging (see {@link #evictForTheOlder}).
+         * way) since it last got through: granted the step it was last refused and then the rest of that drive to its
+         * end. Its precedence by aging (see {@link #evictForTheOlder}).
          */
         int refusals;
-        /** The first step of the stretch it was last refused (from, to), or null: driving it ends the count. */
+        /** The first step of the stretch it was last refused (from, to), or null. */
         List<String> refusedStep;
+        /** Whether it was granted {@link #refusedStep} since: the count ends when a grant then reaches its route's end. */
+        boolean through;
 
         RobotState(String name, String position) {
             this.name = name;
@@ -329,8 +332,8 @@ public final class ReservationTable {
      * asker (see {@link RobotState#refusals}) is refused instead (the fewest first; its wait withdrawn, a {@link Refused}
      * naming both, collected for {@link #takeDisplaced}) and makes way. Without it, rule 3 refused whoever closed the
      * cycle, and a robot coming back to the same single lane was that one every time (the benchmark's courier-3, refused
-     * ten times in a row on c4-c6 until its battery was empty). Ties refuse the asker, as before. Only a wait is
-     * withdrawn, so no wait-for edge is added.
+     * ten times in a row on c4-c6 until its battery was empty). Ties refuse the asker, as before, and so does a cycle
+     * whose younger robots all wait in a dead end. Only a wait is withdrawn, so no wait-for edge is added.
      *
      * @return whether a robot of the cycle was refused
      */
@@ -339,6 +342,12 @@ public final class ReservationTable {
         for (String h : cycle) {
             RobotState b = robots.get(h);
             if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h) || b.refusals >= s.refusals) {
+                continue;
+            }
+            if (map.neighbours(b.decisionPoint()).size() == 1) {
+                // it waits in a dead end (the dock): it can only come out, so making way there is the asker's to do
+                // (in the 5-courier run the one at the dock was displaced, had nowhere to go, and master control then
+                // asked the asker to make way after all, round after round, until the asker's battery was empty)
                 continue;
             }
             if (younger == null || b.refusals < younger.refusals) {
@@ -362,9 +371,10 @@ public final class ReservationTable {
     private static void refused(RobotState s, List<String> stretch) {
         s.refusals++;
         s.refusedStep = List.copyOf(stretch.subList(0, 2));
+        s.through = false;
     }
 
-    /** How often rule 3 refused the robot since it was last granted the step it was refused (its precedence by aging). */
+    /** How often rule 3 refused the robot since it last got through (its precedence by aging, see {@link RobotState#refusals}). */
     public int refusals(String robot) {
         return robot(robot).refusals;
     }
@@ -830,9 +840,15 @@ public final class ReservationTable {
 
     private Granted grant(RobotState s, Request q) {
         if (s.refusedStep != null && Collections.indexOfSubList(q.stretch, s.refusedStep) >= 0) {
-            // through where it was refused: its precedence is spent (a step aside, also a grant, does not end it)
+            s.through = true;
+        }
+        if (s.through && q.horizon.size() <= 1) {
+            // through where it was refused and on to the end of that drive: its precedence is spent (a step aside, also
+            // a grant to a route's end, does not end it; nor does getting through one place of a drive only to meet the
+            // next robot at the next one, as the benchmark's courier-3 did on its way to the dock)
             s.refusals = 0;
             s.refusedStep = null;
+            s.through = false;
         }
         List<String> base = new ArrayList<>(s.base);
         base.addAll(q.stretch.subList(1, q.stretch.size()));

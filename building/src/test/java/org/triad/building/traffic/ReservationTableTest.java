@@ -490,10 +490,15 @@ class ReservationTableTest {
         assertEquals(1, t.refusals("r4"), "being displaced counts as a refusal");
         assertEquals(Set.of(), Graphs.cycle(t.waitsFor()), "no wait-for cycle is left");
 
-        // r4 makes way back to c4; r3 gets c5, through where it was refused: its count ends
+        // r4 makes way back to c4 and on (off the lane); r3 gets c5, through where it was refused, and on to c4, the end of
+        // its drive: only then its count ends
         assertInstanceOf(Granted.class, t.request("r4", route("c5", "c4")));
         Changes c = driveBase(t, "r4");
         assertEquals(List.of("r3"), c.granted().stream().map(Granted::robot).toList());
+        assertEquals(1, t.refusals("r3"), "through c6-c5, not yet at the end of its drive");
+        t.remove("r4");
+        driveBase(t, "r3");
+        assertInstanceOf(Granted.class, t.request("r3", route("c5", "c4")));
         assertEquals(0, t.refusals("r3"));
     }
 
@@ -532,5 +537,29 @@ class ReservationTableTest {
         assertEquals(List.of("old", "guide"), byGuide.cycle());
         assertTrue(g.takeDisplaced().isEmpty());
         assertTrue(g.waiting("guide").isPresent());
+    }
+
+    /**
+     * The dock in the 5-courier run: the robot waiting in a dead end to come out cannot make way, so an older asker at its
+     * door is refused as before (the dead end's robot was displaced, had nowhere to go, and the asker was asked to make
+     * way after all, round after round).
+     */
+    @Test
+    void aRobotWaitingInADeadEndIsNotDisplacedByAge() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c4").node("lobby").node("dock")
+                .edge("c0", "c4").edge("c4", "lobby").edge("lobby", "dock").build();
+        ReservationTable t = table(map);
+        t.place("old", "lobby");
+        t.place("x", "c4");
+        assertInstanceOf(Waiting.class, t.request("x", route("c4", "lobby", "dock")));
+        assertInstanceOf(Refused.class, t.request("old", route("lobby", "c4", "c0")), "head to head: old is refused once");
+        t.remove("x");
+        assertEquals(1, t.refusals("old"));
+        t.place("docked", "dock");
+        assertInstanceOf(Waiting.class, t.request("docked", route("dock", "lobby", "c4", "c0")));
+        Refused r = assertInstanceOf(Refused.class, t.request("old", route("lobby", "dock")), "older, but docked has nowhere to go");
+        assertEquals(List.of("old", "docked"), r.cycle());
+        assertTrue(t.takeDisplaced().isEmpty());
+        assertTrue(t.waiting("docked").isPresent());
     }
 }

@@ -119,7 +119,9 @@ public final class TrafficControl {
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
         for (String w : cycle) {
             // never a robot guiding a person: it would leave its person behind (see ReservationTable's guide case)
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w) && wayOut(w, cycle).isPresent()) {
+            // nor a robot refused more often than the one with nowhere to go: that would undo rule 3's aging case
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w)
+                    && (!table.robots().contains(refused) || table.refusals(w) <= table.refusals(refused)) && wayOut(w, cycle).isPresent()) {
                 makingWay.add(w);
                 makingWayFor.put(w, List.copyOf(cycle));
                 log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
