@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 
 import org.junit.jupiter.api.Test;
+import org.triad.building.traffic.Decision;
 import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.vda5050.protocol.AgvState;
@@ -338,5 +339,29 @@ class RouteDriveTest {
         assertTrue(traffic.place("E", "rb"));
         assertTrue(traffic.roomAside("B").isEmpty(), "E is in rb");
         assertTrue(traffic.roomAside("E").isEmpty(), "E is in a room already");
+    }
+
+    /**
+     * The 5-courier benchmark on the aging branch: the table displaced a courier for one refused more often, the displaced
+     * one had nowhere to step aside, and master control asked the older one to make way after all, round after round,
+     * until its battery was empty. A robot refused more often than the one with nowhere to go is not asked.
+     */
+    @Test
+    void aRobotRefusedMoreOftenIsNotAskedToMakeWay() {
+        TrafficMap map = TrafficMap.builder().node("s").node("a").node("b").node("t").edge("s", "a").edge("a", "b").edge("b", "t").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        for (int i = 0; i < 2; i++) { // B made way twice before (counted, as master control's requests to make way are)
+            assertInstanceOf(Decision.Waiting.class, traffic.request("B", List.of("b", "a")));
+            traffic.read(t -> t.makeWay("B"));
+        }
+        assertInstanceOf(Decision.Waiting.class, traffic.request("B", List.of("b", "a")));
+        Decision.Refused refused = assertInstanceOf(Decision.Refused.class, traffic.request("A", List.of("a", "b")), "refused fewer times than B");
+        assertEquals(Integer.valueOf(2), traffic.<Integer>read(t -> t.refusals("B")));
+        assertEquals(Integer.valueOf(1), traffic.<Integer>read(t -> t.refusals("A")));
+        assertTrue(traffic.wayOut("B", refused.cycle()).isPresent(), "B could step aside to t");
+        assertTrue(traffic.askToMakeWay("A", refused.cycle()).isEmpty(), "but was refused more often than A");
+        assertTrue(traffic.read(t -> t.waiting("B")).isPresent());
     }
 }
