@@ -1,8 +1,6 @@
 package org.triad.service;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.net.URL;
 import java.util.Optional;
 import java.util.Properties;
 
@@ -23,21 +21,11 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  * @param task  the charging task's submission ({@code {"task", "args"}}), or null for none
  */
 public record ChargingPolicy(double below, JsonNode task) {
-    public static final String RESOURCE = "META-INF/triad/application.properties";
+    public static final String RESOURCE = ApplicationProperties.RESOURCE;
 
     /** The policy the application's properties on this class loader name, if any; a malformed one is a start-up error. */
     public static Optional<ChargingPolicy> of(ClassLoader loader) {
-        URL url = loader == null ? null : loader.getResource(RESOURCE);
-        if (url == null) {
-            return Optional.empty();
-        }
-        Properties p = new Properties();
-        try (InputStream in = url.openStream()) {
-            p.load(in);
-        } catch (IOException e) {
-            throw ServiceError.startup("cannot read " + url + ": " + e.getMessage());
-        }
-        return of(p, url.toString());
+        return ApplicationProperties.read(loader).flatMap(a -> of(a.values(), a.where()));
     }
 
     static Optional<ChargingPolicy> of(Properties p, String where) {

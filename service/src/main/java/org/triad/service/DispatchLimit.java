@@ -1,8 +1,5 @@
 package org.triad.service;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.net.URL;
 import java.util.Optional;
 import java.util.Properties;
 
@@ -23,17 +20,7 @@ public record DispatchLimit(int robots) {
 
     /** The limit the application's properties on this class loader set, if any; a malformed one is a start-up error. */
     public static Optional<DispatchLimit> of(ClassLoader loader) {
-        URL url = loader == null ? null : loader.getResource(ChargingPolicy.RESOURCE);
-        if (url == null) {
-            return Optional.empty();
-        }
-        Properties p = new Properties();
-        try (InputStream in = url.openStream()) {
-            p.load(in);
-        } catch (IOException e) {
-            throw ServiceError.startup("cannot read " + url + ": " + e.getMessage());
-        }
-        return of(p, ChargingPolicy.RESOURCE);
+        return ApplicationProperties.read(loader).flatMap(a -> of(a.values(), a.where()));
     }
 
     static Optional<DispatchLimit> of(Properties p, String where) {

@@ -67,9 +67,11 @@ class DispatchLimitTest {
     }
 
     @Test
-    void aLimitThatIsNoNumberOfRobotsStopsTheStartWithTheReason() {
+    void aLimitThatIsNoNumberOfRobotsStopsTheStartWithTheReason() throws Exception {
         ServiceError e = assertThrows(ServiceError.class, () -> withProperties("dispatch.atOnce=none\n",
                 () -> ServiceFixture.start(dir.resolve("db"), "dry:1")));
-        assertEquals("META-INF/triad/application.properties: dispatch.atOnce takes a whole number of robots, at least 1, not 'none'", e.getMessage());
+        // the file is named where it was found, as for the charging policy
+        assertEquals(dir.resolve("app").resolve(ChargingPolicy.RESOURCE).toUri().toURL() + ": dispatch.atOnce takes a whole number of robots, at least 1, not 'none'",
+                e.getMessage());
     }
 }
