@@ -487,13 +487,9 @@ public final class RemoteAgv implements FailureExplaining {
         if (!drive.madeWay() && drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
             return;
         }
-        String why;
-        Failure.Cause cause;
-        synchronized (lock) {
-            why = lastFailure;
-            cause = lastCause;
-        }
-        awaitAbandonedOrderEnded();
+        FailedCall failed = failedCallOnceStopped();
+        String why = failed.why();
+        Failure.Cause cause = failed.cause();
         String from = traffic.decisionPoint(name());
         List<String> cycle = drive.refusal().map(r -> r.cycle()).orElseGet(() -> traffic.madeWayFor(name()));
         Optional<String> side = traffic.wayOut(name(), cycle);
@@ -524,13 +520,9 @@ public final class RemoteAgv implements FailureExplaining {
      * call's failure says where it went. Standing there, it was the end of a chain of waits until its next drive.
      */
     private void clearTheWay(TrafficControl traffic) {
-        String why;
-        Failure.Cause cause;
-        synchronized (lock) {
-            why = lastFailure;
-            cause = lastCause;
-        }
-        awaitAbandonedOrderEnded();
+        FailedCall failed = failedCallOnceStopped();
+        String why = failed.why();
+        Failure.Cause cause = failed.cause();
         String from = traffic.decisionPoint(name());
         Optional<String> room = traffic.roomAside(name());
         if (room.isEmpty()) {
@@ -542,6 +534,20 @@ public final class RemoteAgv implements FailureExplaining {
             lastFailure = why + (moved ? "; stepped aside to '" + room.get() + "', clearing the way" : "; could not step aside: " + lastFailure);
             lastCause = cause;
         }
+    }
+
+    /** The call's failure as it stands, and why: a step aside after it keeps it, saying only where the robot went. */
+    private record FailedCall(String why, Failure.Cause cause) {
+    }
+
+    /** The call's failure, taken once the abandoned order has ended (the AGV stands at its decision point). */
+    private FailedCall failedCallOnceStopped() {
+        FailedCall failed;
+        synchronized (lock) {
+            failed = new FailedCall(lastFailure, lastCause);
+        }
+        awaitAbandonedOrderEnded();
+        return failed;
     }
 
     private boolean runOrder(String orderId, List<Node> nodes, List<Edge> edges, List<Action> actions, String call) {
