@@ -49,8 +49,11 @@ public final class ReservationTable {
     private final TrafficStats stats;
     /** Waiting requests refused to let another robot out of a dead end (see {@link #evictFromTheDoor}), not yet taken. */
     private final List<Refused> displaced = new ArrayList<>();
-    /** Robots whose last request was to guide a person (see {@link #request(String, List, boolean)}): they do not make way. */
-    private final Set<String> guides = new java.util.HashSet<>();
+    /**
+     * Robots whose last request had precedence (to guide a person, or urgent: to charge below its reserve; see
+     * {@link #request(String, List, Precedence)}): they do not make way. Absent: {@link Precedence#PLAIN}.
+     */
+    private final Map<String, Precedence> precedence = new HashMap<>();
     private long arrivals;
     /** Arrival keys are this far apart, so that a request can be put between two queued ones (see {@link #overtaking}). */
     private static final long SPACING = 1L << 20;
@@ -186,17 +189,29 @@ public final class ReservationTable {
      * the robots of the cycle that wait and guide nobody are refused instead, to make way (rule 3's guide case).
      */
     public Decision request(String robot, List<String> route, boolean guiding) {
-        if (guiding) {
-            guides.add(robot);
-        } else {
-            guides.remove(robot);
-        }
+        return request(robot, route, guiding ? Precedence.GUIDE : Precedence.PLAIN);
+    }
+
+    /**
+     * {@link #request(String, List)} with the drive's {@link Precedence}: a robot guiding a person, or one driving to charge
+     * below its reserve (urgent), does not make way; when its request would close a cycle of waits, the first robot of the
+     * cycle that waits without precedence (and not in a dead end, where it can only come out) is refused instead, to make
+     * way (rule 3's precedence case, the guide case of session 12 widened). Among robots with precedence (two guides, two
+     * urgent robots, an urgent robot and a guide) nobody is displaced: the asker is refused as before.
+     */
+    public Decision request(String robot, List<String> route, Precedence drive) {
+        Objects.requireNonNull(drive, "drive");
         RobotState s = robot(robot);
         if (s.lost != null) {
             throw new IllegalStateException("robot " + robot + " is lost (" + s.lost + ") and asks for nothing");
         }
         if (s.pending != null) {
             throw new IllegalStateException("robot " + robot + " already waits for " + s.pending.stretch + "; cancel that first");
+        }
+        if (drive == Precedence.PLAIN) {
+            precedence.remove(robot);
+        } else {
+            precedence.put(robot, drive);
         }
         if (route.size() < 2) {
             throw new IllegalArgumentException("a route to request has at least two nodes, got " + route);
@@ -230,7 +245,7 @@ public final class ReservationTable {
             return grant(s, q);
         }
         List<String> cycle = cycleThrough(q);
-        if (!cycle.isEmpty() && evictFromTheDoor(s, q, cycle)) {
+        if (!cycle.isEmpty() && evictFromTheDoor(s, q, cycle, false)) {
             if (fits(q)) {
                 return grant(s, q);
             }
@@ -246,8 +261,15 @@ public final class ReservationTable {
                 cycle = List.of();
             }
         }
-        // a guide does not make way: the others of the cycle do (the queue ahead tried first: nobody moves then)
-        while (!cycle.isEmpty() && guides.contains(robot) && evictForTheGuide(s, cycle)) {
+        // out of a dead end, the queue ahead tried: a robot waiting further out to go into it makes way (the dock's case)
+        if (!cycle.isEmpty() && evictFromTheDoor(s, q, cycle, true)) {
+            if (fits(q)) {
+                return grant(s, q);
+            }
+            cycle = cycleThrough(q);
+        }
+        // a guide, or an urgent robot, does not make way: the others of the cycle do (the queue ahead tried first: nobody moves then)
+        while (!cycle.isEmpty() && precedence(robot).overridesPlain() && evictForPrecedence(s, cycle)) {
             if (fits(q)) {
                 return grant(s, q);
             }
@@ -280,21 +302,27 @@ public final class ReservationTable {
      *
      * @return whether a robot at the door was refused
      */
-    private boolean evictFromTheDoor(RobotState s, Request q, List<String> cycle) {
+    private boolean evictFromTheDoor(RobotState s, Request q, List<String> cycle, boolean furtherOut) {
         String room = s.position;
         if (!room.equals(s.decisionPoint()) || map.neighbours(room).size() != 1) {
             return false;
         }
         String door = map.neighbours(room).iterator().next();
-        for (String h : List.copyOf(holders(map.node(door)))) {
+        // the one at the door; or (furtherOut, once the queue ahead did not help) one waiting further out for a stretch into
+        // the room: the dock, whose door is the lobby's centre, where nobody waits, so a courier on its way to charge waits
+        // at c4, which the one charging needs to come out; refusing the one inside left both there, and with the urgent
+        // precedence nobody else was displaced or asked to make way
+        for (String h : furtherOut ? cycle : List.copyOf(holders(map.node(door)))) {
             RobotState b = robots.get(h);
-            if (h.equals(s.name) || b.lost != null || b.pending == null || !cycle.contains(h) || !b.decisionPoint().equals(door)
-                    || b.pending.stretch.size() < 2 || !b.pending.stretch.get(1).equals(room)) {
+            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || !cycle.contains(h) || b.pending.stretch.size() < 2
+                    || (furtherOut ? !b.pending.stretch.subList(1, b.pending.stretch.size()).contains(room)
+                            : !b.decisionPoint().equals(door) || !b.pending.stretch.get(1).equals(room))) {
                 continue;
             }
+            String at = b.decisionPoint();
             refused(b, b.pending.stretch);
             withdraw(b);
-            displaced.add(new Refused(h, "deadlock avoided: " + h + " waits at " + door + " to go into the dead end " + room + ", and "
+            displaced.add(new Refused(h, "deadlock avoided: " + h + " waits at " + at + " to go into the dead end " + room + ", and "
                     + s.name + " in there can only come out through " + door + "; " + h + " makes way", List.of(h, s.name)));
             return true;
         }
@@ -302,24 +330,27 @@ public final class ReservationTable {
     }
 
     /**
-     * Rule 3's guide case: the robot guides a person and its request would close a cycle of waits. Every other robot of
-     * the cycle waits (a robot waits for another only if that one holds at its decision point or queued earlier, and in
-     * a cycle each one waits in turn); the first of them that guides nobody is refused instead (its wait withdrawn, a
-     * {@link Refused} naming both, collected for {@link #takeDisplaced}) and makes way. Only a wait is withdrawn, so no
-     * wait-for edge is added.
+     * Rule 3's precedence case: the robot guides a person, or drives to charge below its reserve (urgent), and its request
+     * would close a cycle of waits. Every other robot of the cycle waits (a robot waits for another only if that one holds
+     * at its decision point or queued earlier, and in a cycle each one waits in turn); the first of them without
+     * precedence is refused instead (its wait withdrawn, a {@link Refused} naming both, collected for
+     * {@link #takeDisplaced}) and makes way; never one waiting in a dead end, which can only come out (displaced, it had
+     * nowhere to go and the asker waited for it still). Only a wait is withdrawn, so no wait-for edge is added.
      *
      * @return whether a robot of the cycle was refused
      */
-    private boolean evictForTheGuide(RobotState s, List<String> cycle) {
+    private boolean evictForPrecedence(RobotState s, List<String> cycle) {
         for (String h : cycle) {
             RobotState b = robots.get(h);
-            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h)) {
+            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || precedence(h).overridesPlain()
+                    || map.neighbours(b.decisionPoint()).size() == 1) {
                 continue;
             }
             String at = b.decisionPoint();
             refused(b, b.pending.stretch);
             withdraw(b);
-            displaced.add(new Refused(h, "deadlock avoided: " + h + " at " + at + " and " + s.name + ", which guides a person, would wait for each other; "
+            String which = precedence(s.name) == Precedence.GUIDE ? "guides a person" : "drives to charge below its reserve";
+            displaced.add(new Refused(h, "deadlock avoided: " + h + " at " + at + " and " + s.name + ", which " + which + ", would wait for each other; "
                     + h + " makes way", List.of(h, s.name)));
             return true;
         }
@@ -341,7 +372,7 @@ public final class ReservationTable {
         RobotState younger = null;
         for (String h : cycle) {
             RobotState b = robots.get(h);
-            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || guides.contains(h) || b.refusals >= s.refusals) {
+            if (h.equals(s.name) || b == null || b.lost != null || b.pending == null || precedence(h).overridesPlain() || b.refusals >= s.refusals) {
                 continue;
             }
             if (map.neighbours(b.decisionPoint()).size() == 1) {
@@ -381,7 +412,12 @@ public final class ReservationTable {
 
     /** Whether the robot's last request was to guide a person (see {@link #request(String, List, boolean)}). */
     public boolean guiding(String robot) {
-        return guides.contains(robot);
+        return precedence(robot) == Precedence.GUIDE;
+    }
+
+    /** The precedence of the robot's last request ({@link Precedence#PLAIN} for a robot that asked for nothing yet). */
+    public Precedence precedence(String robot) {
+        return precedence.getOrDefault(robot, Precedence.PLAIN);
     }
 
     /**
@@ -531,6 +567,12 @@ public final class ReservationTable {
         RobotState s = robot(robot);
         withdraw(s);
         s.lost = Objects.requireNonNull(why, "why");
+        // it asks for nothing while lost: no precedence by age to gain (a courier with an empty battery was refused 114
+        // times in a row, each counted) nor to keep, and none by its drive
+        s.refusals = 0;
+        s.refusedStep = null;
+        s.through = false;
+        precedence.remove(robot);
         Set<Resource> wreck = new LinkedHashSet<>(map.standing(s.position));
         if (s.base.size() > 1) {
             wreck.addAll(map.step(s.position, s.base.get(1)));
@@ -545,7 +587,7 @@ public final class ReservationTable {
     public Changes remove(String robot) {
         RobotState s = robot(robot);
         withdraw(s);
-        guides.remove(robot);
+        precedence.remove(robot);
         release(s, new LinkedHashSet<>(s.holding));
         robots.remove(robot);
         return regrant();

@@ -36,6 +36,8 @@ public final class TrafficMap {
     private final Map<String, Set<String>> neighbours;
     /** node or edge id to the areas that contain it. */
     private final Map<Resource, List<Resource>> areasOf;
+    /** Edge id to its length in metres, where the floor map gave one. */
+    private final Map<String, Double> lengths;
 
     private TrafficMap(Builder b) {
         this.nodes = Collections.unmodifiableMap(b.nodes);
@@ -45,6 +47,7 @@ public final class TrafficMap {
         this.edgeEnds = new LinkedHashMap<>();
         this.neighbours = new LinkedHashMap<>();
         this.areasOf = new LinkedHashMap<>();
+        this.lengths = Map.copyOf(b.lengths);
         nodes.keySet().forEach(n -> neighbours.put(n, new LinkedHashSet<>()));
         b.edgeEnds.forEach((id, ends) -> {
             Resource e = edges.get(id);
@@ -99,6 +102,17 @@ public final class TrafficMap {
         return Optional.ofNullable(areas.get(id));
     }
 
+    /**
+     * The length of the edge between two neighbouring nodes, metres (what a robot drives on it), if the floor map gave one.
+     *
+     * @throws IllegalArgumentException when the two are not joined by an edge
+     */
+    public java.util.OptionalDouble length(String a, String b) {
+        Resource e = edge(a, b).orElseThrow(() -> new IllegalArgumentException("no edge joins node '" + a + "' and node '" + b + "' on the traffic map"));
+        Double m = lengths.get(e.id());
+        return m == null ? java.util.OptionalDouble.empty() : java.util.OptionalDouble.of(m);
+    }
+
     /** Every resource of the map: nodes, edges, areas. */
     public List<Resource> resources() {
         List<Resource> all = new ArrayList<>(nodes.values());
@@ -148,6 +162,7 @@ public final class TrafficMap {
         private final Map<String, Resource> areas = new LinkedHashMap<>();
         private final Map<String, List<String>> edgeEnds = new LinkedHashMap<>();
         private final Map<String, List<String>> areaMembers = new LinkedHashMap<>();
+        private final Map<String, Double> lengths = new LinkedHashMap<>();
         private final List<String> problems = new ArrayList<>();
 
         private Builder() {
@@ -209,6 +224,15 @@ public final class TrafficMap {
             return this;
         }
 
+        /** The length of the edge {@code id} in metres (what a robot drives on it: a charge's reserve counts it). */
+        public Builder length(String id, double metres) {
+            if (!(metres >= 0) || Double.isInfinite(metres)) {
+                problems.add("edge '" + id + "' has length " + metres + "; a length is a finite number of metres >= 0");
+            }
+            lengths.put(id, metres);
+            return this;
+        }
+
         /** The node ids declared so far (to name an area's members). */
         public java.util.Set<String> nodeIds() {
             return Collections.unmodifiableSet(nodes.keySet());
@@ -244,6 +268,8 @@ public final class TrafficMap {
                     }
                 }
             });
+            lengths.keySet().stream().filter(id -> !edges.containsKey(id))
+                    .forEach(id -> all.add("a length is given for edge '" + id + "', which is not an edge of the map"));
             if (nodes.isEmpty()) {
                 all.add("the map has no node");
             }

@@ -42,7 +42,7 @@ class ReservationPropertyTest {
     /** Runs one random building; returns the nodes its robots passed. */
     private int run(long seed) {
         Random rnd = new Random(seed);
-        Random guides = new Random(~seed); // a request in four guides a person (rule 3's guide case), apart from the errands' draws
+        Random guides = new Random(~seed); // a request in eight guides a person, one in eight is urgent (rule 3's precedence case), apart from the errands' draws
         TrafficMap map = randomBuilding(rnd);
         double[] now = { 0 };
         ReservationTable t = new ReservationTable(map, () -> now[0]);
@@ -96,7 +96,8 @@ class ReservationPropertyTest {
                     route.addAll(shortestPath(map, t.decisionPoint(r), stops.get(rnd.nextInt(stops.size()))));
                 }
                 if (route.size() > 1) {
-                    Decision d = t.request(r, List.copyOf(route), guides.nextInt(4) == 0);
+                    int kind = guides.nextInt(8); // a guide or an urgent robot (rule 3's precedence case) in four
+                    Decision d = t.request(r, List.copyOf(route), kind == 0 ? Precedence.GUIDE : kind == 1 ? Precedence.URGENT : Precedence.PLAIN);
                     t.takeDisplaced(); // robots refused to let a guide (or a robot out of a dead end) through ask again later
                     if (d instanceof Granted g) {
                         route.clear();

@@ -562,4 +562,118 @@ class ReservationTableTest {
         assertTrue(t.takeDisplaced().isEmpty());
         assertTrue(t.waiting("docked").isPresent());
     }
+
+    /**
+     * Session 14: a courier on its way to charge below its reserve (urgent) is treated like a guide in rule 3. Head to
+     * head on the east side's single lane it does not make way (the plain robot of the cycle is refused instead), and a
+     * plain robot refused more often does not displace it by age: before, each step aside cost it 0.5 % a metre and the
+     * 5-courier runs ended with a battery empty on the way to the dock.
+     */
+    @Test
+    void anUrgentRobotDoesNotMakeWayAndIsNotDisplacedByAge() {
+        ReservationTable t = table(eastSide());
+        t.place("plain", "c5");
+        t.place("low", "c6");
+        assertInstanceOf(Waiting.class, t.request("plain", route("c5", "c6", "c7")));
+        assertInstanceOf(Waiting.class, t.request("low", route("c6", "c5", "c4"), Precedence.URGENT), "the urgent robot queues for c5");
+        List<Refused> displaced = t.takeDisplaced();
+        assertEquals(List.of("plain"), displaced.stream().map(Refused::robot).toList());
+        assertEquals(List.of("plain", "low"), displaced.get(0).cycle());
+        assertTrue(displaced.get(0).reason().contains("low, which drives to charge below its reserve, would wait for each other; plain makes way"),
+                displaced.get(0).reason());
+        assertEquals(Precedence.URGENT, t.precedence("low"));
+        assertEquals(Set.of(), Graphs.cycle(t.waitsFor()));
+
+        // plain, refused once now against low's 0, asks again: by age it would displace low, but low is urgent
+        Refused again = assertInstanceOf(Refused.class, t.request("plain", route("c5", "c6", "c7")), "refused more often, but not displacing the urgent robot");
+        assertEquals(List.of("plain", "low"), again.cycle());
+        assertTrue(t.takeDisplaced().isEmpty());
+        assertTrue(t.waiting("low").isPresent(), "low keeps its wait");
+        assertEquals(2, t.refusals("plain"));
+
+        // plain steps aside is not possible on this lane (c4 is in low's way); it drives back to c4 and on: low gets c5
+        assertInstanceOf(Granted.class, t.request("plain", route("c5", "c4")));
+        assertEquals(List.of("low"), driveBase(t, "plain").granted().stream().map(Granted::robot).toList());
+    }
+
+    /** Among robots with precedence nobody is displaced: two urgent robots, or an urgent robot and a guide, refuse the asker as two guides do. */
+    @Test
+    void twoUrgentRobotsOrAnUrgentRobotAndAGuideRefuseTheAsker() {
+        for (Precedence other : List.of(Precedence.URGENT, Precedence.GUIDE)) {
+            ReservationTable t = table(eastSide());
+            t.place("a", "c5");
+            t.place("b", "c6");
+            assertInstanceOf(Waiting.class, t.request("a", route("c5", "c6", "c7"), other));
+            Refused r = assertInstanceOf(Refused.class, t.request("b", route("c6", "c5", "c4"), Precedence.URGENT), "against " + other);
+            assertEquals(List.of("b", "a"), r.cycle());
+            assertTrue(t.takeDisplaced().isEmpty());
+            assertTrue(t.waiting("a").isPresent());
+            // and the other way round: the guide or urgent asker does not displace the urgent robot waiting
+            ReservationTable u = table(eastSide());
+            u.place("a", "c5");
+            u.place("b", "c6");
+            assertInstanceOf(Waiting.class, u.request("b", route("c6", "c5", "c4"), Precedence.URGENT));
+            assertInstanceOf(Refused.class, u.request("a", route("c5", "c6", "c7"), other), other + " against urgent");
+            assertTrue(u.takeDisplaced().isEmpty());
+        }
+    }
+
+    /**
+     * The dock: a dead end whose door is the lobby's centre, where nobody waits, so a courier on its way to charge waits
+     * at c4 for the dock, and the courier charging there needs c4 to come out. Refusing the one inside left both where
+     * they were (and, urgent, the one at c4 was asked by nobody to make way): the one waiting to go in is refused
+     * instead, wherever it waits, and steps out of the way; the one inside comes out, then it goes in.
+     */
+    @Test
+    void aRobotWaitingFurtherOutToGoIntoTheDeadEndTheAskerComesOutOfMakesWayUrgentOrNot() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c4").node("c5").node("lobby").node("dock")
+                .edge("c0", "c4").edge("c4", "c5").edge("c4", "lobby").edge("lobby", "dock")
+                .area(Kind.CORRIDOR, "hall", 1, "lobby", "c4-lobby", "lobby-dock").build();
+        ReservationTable t = table(map);
+        t.place("docked", "dock");
+        t.place("low", "c4");
+        Waiting w = assertInstanceOf(Waiting.class, t.request("low", route("c4", "lobby", "dock"), Precedence.URGENT));
+        assertEquals(List.of("docked"), w.queued().blockers());
+        assertInstanceOf(Waiting.class, t.request("docked", route("dock", "lobby", "c4", "c5")), "queued behind low, which makes way");
+        List<Refused> displaced = t.takeDisplaced();
+        assertEquals(List.of("low"), displaced.stream().map(Refused::robot).toList());
+        assertEquals("deadlock avoided: low waits at c4 to go into the dead end dock, and docked in there can only come out through lobby; low makes way",
+                displaced.get(0).reason());
+        assertTrue(t.waiting("low").isEmpty());
+        assertEquals(Set.of(), Graphs.cycle(t.waitsFor()));
+        // low steps aside to c0 (off docked's way), docked comes out, low goes in
+        assertInstanceOf(Granted.class, t.request("low", route("c4", "c0")));
+        assertEquals(List.of("docked"), driveBase(t, "low").granted().stream().map(Granted::robot).toList());
+        driveBase(t, "docked");
+        assertInstanceOf(Granted.class, t.request("docked", route("c4", "c5")));
+        driveBase(t, "docked");
+        assertInstanceOf(Granted.class, t.request("low", route("c0", "c4", "lobby", "dock"), Precedence.URGENT));
+    }
+
+    /**
+     * A robot whose battery ran empty is lost where it stands (rule 4): requests through it are refused at once with the
+     * reason, and the table stops counting it (its aging count and its precedence end; back on the map, it starts afresh).
+     */
+    @Test
+    void aRobotLostWithAnEmptyBatteryIsNotWaitedForNorCounted() {
+        ReservationTable t = table(eastSide());
+        t.place("a", "c6");
+        t.place("b", "c5");
+        assertInstanceOf(Waiting.class, t.request("a", route("c6", "c5", "c4"), Precedence.URGENT));
+        assertInstanceOf(Refused.class, t.request("b", route("c5", "c6", "c7"), Precedence.URGENT));
+        assertEquals(1, t.refusals("b"));
+        t.cancel("a");
+        t.lost("b", "battery empty at c5");
+        assertEquals(0, t.refusals("b"));
+        assertEquals(Precedence.PLAIN, t.precedence("b"));
+        Refused r = assertInstanceOf(Refused.class, t.request("a", route("c6", "c5", "c4"), Precedence.URGENT), "not waited for");
+        assertEquals("node 'c5' is blocked by robot b, lost there (battery empty at c5)", r.reason());
+        assertTrue(r.cycle().isEmpty(), "no deadlock refusal: nobody is counted for it");
+        assertEquals(0, t.refusals("a"));
+        assertThrows(IllegalStateException.class, () -> t.request("b", route("c5", "c4")), "a lost robot asks for nothing");
+        t.remove("b");
+        t.place("b", "c5");
+        assertEquals(0, t.refusals("b"));
+        assertInstanceOf(Granted.class, t.request("b", route("c5", "c4")));
+    }
 }

@@ -67,4 +67,17 @@ class TrafficMapTest {
         assertEquals("no edge joins node 'hall-w' and node 'hall-e' on the traffic map",
                 assertThrows(IllegalArgumentException.class, () -> map.step("hall-w", "hall-e")).getMessage());
     }
+
+    @Test
+    void anEdgeHasTheLengthTheFloorMapGaveItEitherWayRoundAndABadLengthIsAClearError() {
+        TrafficMap map = TrafficMap.builder().node("a").node("b").node("c").edge("a", "b").edge("b", "c").length("a-b", 4.5).build();
+        assertEquals(4.5, map.length("a", "b").orElseThrow());
+        assertEquals(4.5, map.length("b", "a").orElseThrow(), "one lane both ways");
+        assertTrue(map.length("b", "c").isEmpty(), "not given");
+        assertThrows(IllegalArgumentException.class, () -> map.length("a", "c"));
+        TrafficMapException e = assertThrows(TrafficMapException.class, () -> TrafficMap.builder().node("a").node("b").edge("a", "b")
+                .length("a-b", -1).length("b-a", 2).build());
+        assertEquals(List.of("edge 'a-b' has length -1.0; a length is a finite number of metres >= 0",
+                "a length is given for edge 'b-a', which is not an edge of the map"), e.problems());
+    }
 }
