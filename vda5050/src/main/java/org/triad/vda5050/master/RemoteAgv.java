@@ -305,6 +305,17 @@ public final class RemoteAgv implements FailureExplaining {
      * the lift's cabin on the traffic map. The call succeeds once the robot arrived and every edge's action finished.
      */
     public boolean driveRoute(List<String> route, TrafficControl traffic, List<EdgeAction> edgeActionsPerEdge) {
+        return driveRoute(route, traffic, edgeActionsPerEdge, false);
+    }
+
+    /**
+     * {@link #driveRoute(List, TrafficControl, List)}, {@code urgent} when the robot drives to charge below its reserve:
+     * traffic control then treats it like a guide (rule 3's precedence case: it does not make way, the plain robots of a
+     * cycle do), master control does not ask it to make way, and after a wait over the bound it does not clear the way into
+     * a room (each metre out of its way is one it may not have); refused as a deadlock it still steps aside, its way
+     * forward being closed.
+     */
+    public boolean driveRoute(List<String> route, TrafficControl traffic, List<EdgeAction> edgeActionsPerEdge, boolean urgent) {
         if (route.size() < 2) {
             throw new IllegalArgumentException("a route has at least two nodes, got " + route);
         }
@@ -322,6 +333,15 @@ public final class RemoteAgv implements FailureExplaining {
             lastFailure = null;
             orderToFirstState = -1;
         }
+        Optional<String> empty = batteryEmpty();
+        if (empty.isPresent()) {
+            // it cannot drive: lost where it stands until it is charged (rule 4: nobody waits for it, requests through its place
+            // are refused at once with the reason); placing it again would have others wait for it for good
+            traffic.lost(name(), empty.get());
+            synchronized (lock) {
+                return fail(call + " on AGV " + name() + " refused: " + empty.get());
+            }
+        }
         synchronized (lock) {
             this.traffic = traffic;
             drivingRoute = true;
@@ -334,7 +354,7 @@ public final class RemoteAgv implements FailureExplaining {
             if (edgeActions.stream().allMatch(Objects::isNull)) {
                 edgeActions.clear();
             }
-            return driveRouteUnder(route, traffic, call, edgeActions);
+            return driveRouteUnder(route, traffic, call, edgeActions, traffic.stepsAside(), urgent);
         } finally {
             synchronized (lock) {
                 drivingRoute = false;
@@ -345,12 +365,12 @@ public final class RemoteAgv implements FailureExplaining {
         }
     }
 
-    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions) {
-        return driveRouteUnder(route, traffic, call, edgeActions, traffic.stepsAside());
-    }
-
-    /** @param mayStepAside whether the robot makes way by itself (not while it is stepping aside already) */
-    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions, boolean mayStepAside) {
+    /**
+     * @param mayStepAside whether the robot makes way by itself (not while it is stepping aside already)
+     * @param urgent       whether it drives to charge below its reserve (see {@link #driveRoute(List, TrafficControl, List, boolean)})
+     */
+    private boolean driveRouteUnder(List<String> route, TrafficControl traffic, String call, List<Action> edgeActions, boolean mayStepAside,
+            boolean urgent) {
         awaitAbandonedOrderEnded(); // a failed drive's AGV may still roll to where it was stopped
         boolean idle;
         String at;
@@ -394,7 +414,7 @@ public final class RemoteAgv implements FailureExplaining {
             if (side.isPresent()) {
                 traffic.note("traffic: " + name() + " steps aside from " + route.get(0) + " to " + side.get() + ": " + route.get(1)
                         + " is a dead end that another robot holds, and " + route.get(0) + " its only way out");
-                if (!driveRouteUnder(List.of(route.get(0), side.get()), traffic, "step aside " + route.get(0) + " -> " + side.get(), List.of(), false)) {
+                if (!driveRouteUnder(List.of(route.get(0), side.get()), traffic, "step aside " + route.get(0) + " -> " + side.get(), List.of(), false, false)) {
                     return false;
                 }
                 List<String> back = new ArrayList<>(route);
@@ -403,7 +423,7 @@ public final class RemoteAgv implements FailureExplaining {
                 if (!actions.isEmpty()) {
                     actions.add(0, null);
                 }
-                return driveRouteUnder(back, traffic, call, actions, false);
+                return driveRouteUnder(back, traffic, call, actions, false, urgent);
             }
         }
         long sent = System.nanoTime();
@@ -411,7 +431,7 @@ public final class RemoteAgv implements FailureExplaining {
                 (id, update, nodes, edges) -> publish(Topic.ORDER, new Order(headerIds.next(Topic.ORDER), HeaderIds.now(), Header.VERSION,
                         manufacturer, serialNumber, id, update, null, nodes, edges)),
                 why -> publish(Topic.INSTANT_ACTIONS, new InstantActions(headerIds.next(Topic.INSTANT_ACTIONS), HeaderIds.now(), Header.VERSION,
-                        manufacturer, serialNumber, List.of(action("startPause", Map.of())))), edgeActions);
+                        manufacturer, serialNumber, List.of(action("startPause", Map.of())))), edgeActions, urgent);
         screen.sent(drive.orderId()); // its states are progress of our order, not of a stranger's
         Optional<String> refused = drive.start();
         if (refused.isPresent()) {
@@ -438,7 +458,7 @@ public final class RemoteAgv implements FailureExplaining {
                 }
             }
             if (mayStepAside) {
-                stepAsideAfter(drive, traffic);
+                stepAsideAfter(drive, traffic, urgent);
             }
             return false;
         }
@@ -467,8 +487,17 @@ public final class RemoteAgv implements FailureExplaining {
             if (now != null) {
                 trail(now);
             }
+            Optional<String> empty = batteryEmpty();
+            if (empty.isPresent() && !down) {
+                // ran flat on the way: lost where it stopped (its base ahead freed) until it is charged, not waited for
+                traffic.lost(name(), empty.get());
+                synchronized (lock) {
+                    lastFailure = lastFailure + "; " + empty.get() + ", lost on the traffic map till then";
+                }
+                return false;
+            }
             if ((mayStepAside || drive.madeWay()) && !down) {
-                stepAsideAfter(drive, traffic);
+                stepAsideAfter(drive, traffic, urgent);
             }
         }
         return ok;
@@ -479,9 +508,11 @@ public final class RemoteAgv implements FailureExplaining {
      * neighbouring stop node, once it stands at its decision point, so that they can pass; the call's failure says where
      * it went, and its caller re-plans from there.
      */
-    private void stepAsideAfter(RouteDrive drive, TrafficControl traffic) {
+    private void stepAsideAfter(RouteDrive drive, TrafficControl traffic, boolean urgent) {
         if (drive.waitedInVain()) {
-            clearTheWay(traffic);
+            if (!urgent) { // an urgent robot keeps its place on its way to charge: its caller asks again from there
+                clearTheWay(traffic);
+            }
             return;
         }
         if (!drive.madeWay() && drive.refusal().map(r -> r.cycle().isEmpty()).orElse(true)) {
@@ -504,7 +535,7 @@ public final class RemoteAgv implements FailureExplaining {
         }
         traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of "
                 + drive.refusal().map(r -> r.cycle().toString()).orElse("a robot refused as a deadlock"));
-        boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false);
+        boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false, false);
         // could not get out of the way: one of the robots it would have waited for makes way instead, as when it had nowhere to go
         Optional<String> other = moved ? Optional.empty() : drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
         synchronized (lock) {
@@ -529,7 +560,7 @@ public final class RemoteAgv implements FailureExplaining {
             return;
         }
         traffic.note("traffic: " + name() + " steps aside from " + from + " to " + room.get() + ", clearing the way after a wait over the bound");
-        boolean moved = driveRouteUnder(List.of(from, room.get()), traffic, "step aside " + from + " -> " + room.get(), List.of(), false);
+        boolean moved = driveRouteUnder(List.of(from, room.get()), traffic, "step aside " + from + " -> " + room.get(), List.of(), false, false);
         synchronized (lock) {
             lastFailure = why + (moved ? "; stepped aside to '" + room.get() + "', clearing the way" : "; could not step aside: " + lastFailure);
             lastCause = cause;
@@ -700,6 +731,19 @@ public final class RemoteAgv implements FailureExplaining {
                     return fail(call + " on AGV " + name() + " interrupted");
                 }
             }
+        }
+    }
+
+    /**
+     * Why the AGV cannot drive for want of charge, if its state says so: its battery at 0 % and not charging (VDA 5050's
+     * {@code batteryState}), where it stands.
+     */
+    private Optional<String> batteryEmpty() {
+        synchronized (lock) {
+            if (state == null || state.batteryState() == null || state.batteryState().charging() || state.batteryState().batteryCharge() > 0) {
+                return Optional.empty();
+            }
+            return Optional.of("its battery is empty (batteryCharge 0 %) at " + state.lastNodeId() + ": it cannot drive until it is charged");
         }
     }
 

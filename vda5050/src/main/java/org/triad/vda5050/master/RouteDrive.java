@@ -9,6 +9,7 @@ import java.util.function.Consumer;
 import org.triad.building.traffic.Decision;
 import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.Precedence;
 import org.triad.building.traffic.Wait;
 import org.triad.vda5050.protocol.AgvState;
 import org.triad.vda5050.protocol.Messages.Action;
@@ -53,6 +54,8 @@ final class RouteDrive {
     private final Consumer<String> stopNow;
     /** The action done along each edge (e.g. guiding a person, riding the lift), one per edge (null: none), or empty. */
     private final List<Action> edgeActions;
+    /** Whether the robot drives to charge below its reserve (see {@link Precedence#URGENT}). */
+    private final boolean urgent;
     private final List<Integer> stretchEnds = new ArrayList<>();
     private int updateId = -1;
     private int baseEnd;
@@ -82,6 +85,13 @@ final class RouteDrive {
      */
     RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow,
             List<Action> edgeActions) {
+        this(robot, route, orderId, traffic, orders, stopNow, edgeActions, false);
+    }
+
+    /** @param urgent whether the robot drives to charge below its reserve: it does not make way (rule 3's precedence case) */
+    RouteDrive(String robot, List<String> route, String orderId, TrafficControl traffic, OrderSender orders, Consumer<String> stopNow,
+            List<Action> edgeActions, boolean urgent) {
+        this.urgent = urgent;
         if (!edgeActions.isEmpty() && edgeActions.size() != route.size() - 1) {
             throw new IllegalArgumentException("one edge action per edge of " + route + ", not " + edgeActions.size());
         }
@@ -110,7 +120,7 @@ final class RouteDrive {
 
     /** Asks for the first stretches and sends the order (its base possibly just the start node); a reason when refused. */
     Optional<String> start() {
-        Decision d = traffic.request(robot, route, guiding());
+        Decision d = traffic.request(robot, route, precedence());
         if (d instanceof Refused r) {
             refusal = r;
             return Optional.of(r.reason());
@@ -279,7 +289,7 @@ final class RouteDrive {
     /** Asks for further stretches while the robot is in its last granted one; a reason when refused. */
     private Optional<String> askAhead() {
         while (!waiting && baseEnd < route.size() - 1 && stretchEnds.stream().filter(e -> e > passed).count() <= 1) {
-            Decision d = traffic.request(robot, route.subList(baseEnd, route.size()), guiding());
+            Decision d = traffic.request(robot, route.subList(baseEnd, route.size()), precedence());
             if (d instanceof Refused r) {
                 refusal = r;
                 return Optional.of(r.reason());
@@ -309,9 +319,15 @@ final class RouteDrive {
         return Optional.empty();
     }
 
-    /** Whether the robot guides a person on the drive: it does not make way (the person would be left behind). */
-    private boolean guiding() {
-        return edgeActions.stream().anyMatch(a -> a != null && a.actionType().equals("guide"));
+    /**
+     * What the drive asks of rule 3: urgent on the way to charge below its reserve (it would run flat in the others' way),
+     * a guide when it guides a person (the person would be left behind); either does not make way.
+     */
+    Precedence precedence() {
+        if (urgent) {
+            return Precedence.URGENT;
+        }
+        return edgeActions.stream().anyMatch(a -> a != null && a.actionType().equals("guide")) ? Precedence.GUIDE : Precedence.PLAIN;
     }
 
     /** Whether traffic control refused the drive to avoid a deadlock (a refusal naming a cycle; a blocked place names none). */

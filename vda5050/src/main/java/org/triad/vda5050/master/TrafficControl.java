@@ -11,6 +11,7 @@ import java.util.function.Function;
 import org.triad.building.traffic.Decision;
 import org.triad.building.traffic.Decision.Granted;
 import org.triad.building.traffic.Decision.Refused;
+import org.triad.building.traffic.Precedence;
 import org.triad.building.traffic.ReservationTable;
 import org.triad.building.traffic.ReservationTable.Changes;
 import org.triad.building.traffic.Resource;
@@ -118,9 +119,10 @@ public final class TrafficControl {
      */
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
         for (String w : cycle) {
-            // never a robot guiding a person: it would leave its person behind (see ReservationTable's guide case)
-            // nor a robot refused more often than the one with nowhere to go: that would undo rule 3's aging case
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.guiding(w)
+            // never a robot guiding a person (it would leave its person behind) nor one driving to charge below its reserve
+            // (it may not have the metres): see ReservationTable's precedence case; nor a robot refused more often than the
+            // one with nowhere to go: that would undo rule 3's aging case
+            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.precedence(w).overridesPlain()
                     && (!table.robots().contains(refused) || table.refusals(w) <= table.refusals(refused)) && wayOut(w, cycle).isPresent()) {
                 makingWay.add(w);
                 makingWayFor.put(w, List.copyOf(cycle));
@@ -420,10 +422,15 @@ public final class TrafficControl {
 
     /** @param guiding whether the robot guides a person along the route: it does not make way, the others of a cycle do */
     synchronized Decision request(String robot, List<String> route, boolean guiding) {
+        return request(robot, route, guiding ? Precedence.GUIDE : Precedence.PLAIN);
+    }
+
+    /** @param drive a guide or an urgent drive (to charge below its reserve) does not make way, the others of a cycle do */
+    synchronized Decision request(String robot, List<String> route, Precedence drive) {
         mailbox.remove(robot);
         displaced.remove(robot); // a refusal its last call did not pick up says nothing about this one
         requests++;
-        Decision d = table.request(robot, route, guiding);
+        Decision d = table.request(robot, route, drive);
         for (Refused r : table.takeDisplaced()) { // robots waiting at the door of the dead end this one comes out of
             log.accept("traffic: " + r.reason());
             mailbox.put(r.robot(), r);

@@ -15,6 +15,7 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.triad.building.traffic.Decision;
 import org.triad.building.traffic.Decision.Granted;
+import org.triad.building.traffic.Precedence;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.vda5050.protocol.AgvState;
 import org.triad.vda5050.protocol.Messages.AgvError;
@@ -363,5 +364,40 @@ class RouteDriveTest {
         assertTrue(traffic.wayOut("B", refused.cycle()).isPresent(), "B could step aside to t");
         assertTrue(traffic.askToMakeWay("A", refused.cycle()).isEmpty(), "but was refused more often than A");
         assertTrue(traffic.read(t -> t.waiting("B")).isPresent());
+    }
+
+    /**
+     * Session 14: a robot driving to charge below its reserve (urgent) is not asked to make way for a refused robot with
+     * nowhere to step aside, as a guide is not; the drive's urgency reaches the table as its precedence.
+     */
+    @Test
+    void anUrgentRobotIsNotAskedToMakeWayAndItsDriveReachesTheTableAsUrgent() {
+        TrafficMap map = TrafficMap.builder().node("s").node("a").node("b").node("t").edge("s", "a").edge("a", "b").edge("b", "t").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        RouteDrive drive = new RouteDrive("B", List.of("b", "a"), "order-1", traffic, (id, update, nodes, edges) -> { }, why -> { }, List.of(), true);
+        assertEquals(Precedence.URGENT, drive.precedence());
+        assertTrue(drive.start().isEmpty(), "B waits for a");
+        assertEquals(Precedence.URGENT, traffic.<Precedence>read(t -> t.precedence("B")));
+        Decision.Refused refused = assertInstanceOf(Decision.Refused.class, traffic.request("A", List.of("a", "b")), "A does not displace B");
+        assertTrue(traffic.wayOut("B", refused.cycle()).isPresent(), "B could step aside to t");
+        assertTrue(traffic.askToMakeWay("A", refused.cycle()).isEmpty(), "but it drives to charge");
+        assertTrue(traffic.read(t -> t.waiting("B")).isPresent());
+    }
+
+    /** A robot lost where its battery ran empty is not waited for: a request through its place is refused at once, with the reason. */
+    @Test
+    void aRobotLostWithAnEmptyBatteryIsNotWaitedFor() {
+        TrafficMap map = TrafficMap.builder().node("s").node("a").node("b").edge("s", "a").edge("a", "b").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        traffic.lost("B", "its battery is empty (batteryCharge 0 %) at b: it cannot drive until it is charged");
+        Decision.Refused r = assertInstanceOf(Decision.Refused.class, traffic.request("A", List.of("a", "b")));
+        assertEquals("node 'b' is blocked by robot B, lost there (its battery is empty (batteryCharge 0 %) at b: it cannot drive until it is charged)",
+                r.reason());
+        assertTrue(traffic.place("B", "b"), "charged, it is back where it stands");
+        assertFalse(traffic.isLost("B"));
     }
 }
