@@ -27,12 +27,14 @@ import org.triad.vda5050.mqtt.BrokerUnreachableException;
  * <pre>
  * java ... HospitalAgvMain --broker tcp://127.0.0.1:1883 [--serial courier-1 | --count N] [--speed 10|max] [--seed 42]
  *                          [--out DIR] [--close-fire-door-at SECONDS] [--battery PERCENT]
- *                          [--break-lift-at SECONDS] [--devices on|off]
+ *                          [--break-lift-at SECONDS] [--devices on|off] [--rescue-after SECONDS]
  * </pre>
  *
  * The building serves its doors and its lift on the broker ({@link BuildingDoors}, {@link BuildingLifts}); with
  * {@code --devices off} it does not (a building whose devices do not answer). {@code --break-lift-at T} makes the
- * lift stop between floors on its first ride after virtual time T.
+ * lift stop between floors on its first ride after virtual time T. {@code --rescue-after S} has staff swap the battery of
+ * a courier whose battery has been empty for S virtual seconds, where it stands, each printed as a line {@code rescue
+ * courier-3 at c5 ...} ({@link BatteryRescue}); without it an empty courier stands for good.
  *
  * On a clean stop it prints how fast the building ran: {@code building: 600.0 s simulated in 60.0 s (10.00x real
  * time), CPU 12.3 s}.
@@ -48,9 +50,15 @@ public final class HospitalAgvMain {
      * @param battery          every courier's initial battery charge, percent
      * @param breakLiftAt      virtual time from which the lift stops between floors on its next ride, or null
      * @param devices          whether the building serves its doors and lift on the broker
+     * @param rescueAfter      virtual seconds after which staff swap an empty courier's battery, or null (never)
      */
     public record Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery,
-            Double breakLiftAt, boolean devices) {
+            Double breakLiftAt, boolean devices, Double rescueAfter) {
+        public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt, double battery,
+                Double breakLiftAt, boolean devices) {
+            this(broker, serials, seed, speed, out, closeFireDoorAt, battery, breakLiftAt, devices, null);
+        }
+
         public Options(String broker, List<String> serials, long seed, double speed, Path out, Double closeFireDoorAt) {
             this(broker, serials, seed, speed, out, closeFireDoorAt, 100);
         }
@@ -77,6 +85,9 @@ public final class HospitalAgvMain {
             }
             if (breakLiftAt != null && (!(breakLiftAt >= 0) || breakLiftAt.isInfinite())) {
                 throw new IllegalArgumentException("--break-lift-at takes a time in seconds >= 0, not " + breakLiftAt);
+            }
+            if (rescueAfter != null && (!(rescueAfter >= 0) || rescueAfter.isInfinite())) {
+                throw new IllegalArgumentException("--rescue-after takes a time in seconds >= 0, not " + rescueAfter);
             }
             serials = List.copyOf(serials);
         }
@@ -128,6 +139,7 @@ public final class HospitalAgvMain {
         double battery = 100;
         Double breakLift = null;
         boolean devices = true;
+        Double rescue = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (i + 1 >= args.length) {
@@ -145,6 +157,7 @@ public final class HospitalAgvMain {
                     case "--close-fire-door-at" -> door = Double.parseDouble(v);
                     case "--battery" -> battery = Double.parseDouble(v);
                     case "--break-lift-at" -> breakLift = Double.parseDouble(v);
+                    case "--rescue-after" -> rescue = Double.parseDouble(v);
                     case "--devices" -> {
                         if (!v.equals("on") && !v.equals("off")) {
                             throw new IllegalArgumentException("--devices takes on or off, not '" + v + "'");
@@ -161,7 +174,7 @@ public final class HospitalAgvMain {
             throw new IllegalArgumentException("give --serial S or --count N (serials courier-1..N), not both");
         }
         List<String> serials = count != null ? Options.numbered("courier", count) : List.of(serial == null ? "courier-1" : serial);
-        return new Options(broker, serials, seed, speed, out, door, battery, breakLift, devices);
+        return new Options(broker, serials, seed, speed, out, door, battery, breakLift, devices, rescue);
     }
 
     /** Starts the building and its AGVs and serves until the JVM is stopped; returns 2 at once if the broker does not answer. */
@@ -192,6 +205,9 @@ public final class HospitalAgvMain {
             building.sim().at(o.breakLiftAt()).breakLift(HospitalFloor.LIFT);
         }
         building.onContact(c -> out.println(c));
+        if (o.rescueAfter() != null) {
+            BatteryRescue.serve(building, o.rescueAfter(), out::println);
+        }
         long cpuStart = cpuNanos();
         SimulationClock clock = building.start(o.speed());
         java.util.concurrent.atomic.AtomicReference<DeviceLink> deviceLink = new java.util.concurrent.atomic.AtomicReference<>();

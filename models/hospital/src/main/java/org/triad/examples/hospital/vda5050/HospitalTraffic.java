@@ -169,6 +169,15 @@ public final class HospitalTraffic {
         }
         doors.forEach((door, edges) -> b.area(Kind.DOOR, door, 1, edges.toArray(String[]::new)));
         corridors.forEach((corridor, edges) -> b.area(Kind.CORRIDOR, corridor, 1, edges.toArray(String[]::new)));
+        // each lane's metres as the courier drives them (the models' distances; a ride: into the cabin and out), so that a
+        // charge's reserve is measured on this map (building's ChargeReserve)
+        for (String e : List.copyOf(b.edgeIds())) {
+            String[] ends = e.split("-");
+            if (ends.length != 2) {
+                throw new IllegalStateException("edge '" + e + "' is not named after its two nodes");
+            }
+            b.length(e, org.triad.examples.hospital.SimulatedBuilding.routeLength(floor, ends[0], ends[1]));
+        }
         return b.build();
     }
 

@@ -18,10 +18,12 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.triad.building.ChargeReserve;
 import org.triad.building.traffic.Resource.Kind;
 import org.triad.building.traffic.TrafficMap;
 import org.triad.building.traffic.TrafficStats;
 import org.triad.examples.hospital.HospitalFloor;
+import org.triad.examples.hospital.HospitalObjects;
 import org.triad.examples.hospital.LobbyParking;
 import org.triad.vda5050.broker.MosquittoBroker;
 import org.triad.vda5050.devices.DeviceLink;
@@ -42,9 +44,13 @@ import org.triad.vda5050.protocol.AgvState;
  * completed per simulated hour, drives that failed, waits for doors and corridors/lanes (median, p95, max, in
  * simulated seconds) and the master's CPU (this JVM: master control, traffic control, the couriers' loops).
  * Guides need people and are left out (the building has two, Alice and Bob, not one a courier). A courier's battery
- * drains 0.5 % a metre (issue #22): below {@value #RECHARGE_BELOW} % it drives to the dock (a node of the traffic map,
- * {@link LobbyParking#DOCK}: couriers queue for it in the reservation table) and charges before its next leg; without that every
- * courier ran flat after some 200 m and stood, and the rows measured dead couriers.
+ * drains 0.5 % a metre (issue #22): it takes its next leg only if its charge covers the leg, the way back to the dock and
+ * a margin ({@link ChargeReserve} on the traffic map's lanes, {@value #MARGIN_PERCENT} %), else it drives to the dock (a
+ * node of the traffic map, {@link LobbyParking#DOCK}: couriers queue for it in the reservation table) as an urgent drive
+ * (rule 3's precedence case) and charges first; without charging every courier ran flat after some 200 m and stood, and
+ * the rows measured dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
+ * the building's staff, who swap its battery where it stands after {@value #RESCUE_AFTER_SECONDS} simulated seconds
+ * ({@code --rescue-after}), and every such rescue is a column of the table.
  *
  * <pre>
  * mvn -B -q -pl models/hospital -am package -DskipTests
@@ -66,7 +72,8 @@ public final class BuildingTrafficBenchmark {
     private static final double STANDSTILL = 60;
 
     private record Row(int robots, boolean reserved, int contacts, int standstills, double longestStill, double simHours, long tasks, long failed,
-            List<Double> doorWaits, List<Double> liftWaits, List<Double> laneWaits, double cpuSeconds, long routes, long reservations, long asides, long charges) {
+            List<Double> doorWaits, List<Double> liftWaits, List<Double> laneWaits, double cpuSeconds, long routes, long reservations, long asides, long charges,
+            double lowestBattery, int rescues) {
     }
 
     public static void main(String[] args) throws Exception {
@@ -94,14 +101,14 @@ public final class BuildingTrafficBenchmark {
         }
         System.out.printf(Locale.ROOT, "%n%.0f simulated minutes per run at %.0fx real time, seed %d, both floors of the dyn4j hospital%n", minutes,
                 speed, seed);
-        System.out.println("| robots | reservations | contacts | standstills | longest still s | tasks/sim-h | dock visits | failed drives | steps aside | door waits med/p95/max s (n) | lift waits med/p95/max s (n) | corridor+lane waits med/p95/max s (n) | master CPU ms per robot per sim-min | master CPU ms per route | master CPU ms per reservation |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+        System.out.println("| robots | reservations | contacts | standstills | longest still s | tasks/sim-h | dock visits | lowest battery % | rescues | failed drives | steps aside | door waits med/p95/max s (n) | lift waits med/p95/max s (n) | corridor+lane waits med/p95/max s (n) | master CPU ms per robot per sim-min | master CPU ms per route | master CPU ms per reservation |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
         rows.forEach(r -> System.out.println(format(r)));
     }
 
     private static String format(Row r) {
-        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.0f | %.1f | %d | %d | %s | %s | %s | %s | %.1f | %.2f | %s |", r.robots, r.reserved ? "yes" : "no",
-                r.contacts, r.standstills, r.longestStill, r.tasks / r.simHours, r.charges, r.failed, r.reserved ? Long.toString(r.asides) : "-", waits(r.doorWaits, r.reserved), waits(r.liftWaits, r.reserved),
+        return String.format(Locale.ROOT, "| %d | %s | %d | %d | %.0f | %.1f | %d | %.1f | %d | %d | %s | %s | %s | %s | %.1f | %.2f | %s |", r.robots, r.reserved ? "yes" : "no",
+                r.contacts, r.standstills, r.longestStill, r.tasks / r.simHours, r.charges, r.lowestBattery, r.rescues, r.failed, r.reserved ? Long.toString(r.asides) : "-", waits(r.doorWaits, r.reserved), waits(r.liftWaits, r.reserved),
                 waits(r.laneWaits, r.reserved), r.cpuSeconds * 1000 / r.robots / (r.simHours * 60), r.routes == 0 ? 0 : r.cpuSeconds * 1000 / r.routes,
                 r.reservations == 0 ? "-" : String.format(Locale.ROOT, "%.2f", r.cpuSeconds * 1000 / r.reservations));
     }
@@ -125,12 +132,13 @@ public final class BuildingTrafficBenchmark {
         // every line of master control and traffic control with the simulated second (at the building's pace) it came at
         java.util.function.Consumer<String> timed = l -> log.add(String.format(Locale.ROOT, "%.1f s: %s", (System.nanoTime() - t0) / 1e9 * speed, l));
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"));
-                AgvProcess building = AgvProcess.building(broker.url(), n, speed, dir);
+                AgvProcess building = AgvProcess.building(broker.url(), n, speed, dir, "--rescue-after", Double.toString(RESCUE_AFTER_SECONDS));
                 MasterControl master = MasterControl.connect(broker.url(), VdaTimeouts.defaults(), timed);
                 DeviceLink doorLink = DeviceLink.connect(broker.url(), "benchmark-doors", timed);
                 DoorKeeper keeper = new DoorKeeper(doorLink, HospitalTraffic.keptDoors(new HospitalFloor()), 30, timed)) {
             // the table runs on the wall clock: a courier may wait 120 simulated seconds at the building's pace
             TrafficControl traffic = new TrafficControl(map, 120 / speed, timed);
+            ChargeReserve reserve = new ChargeReserve(map, LobbyParking.DOCK, HospitalObjects.DRAIN_PERCENT_PER_METRE, MARGIN_PERCENT, (a, b) -> path(map, a, b));
             if (reserved) {
                 traffic.keepDoors(keeper).stepAside(true);
             }
@@ -157,6 +165,7 @@ public final class BuildingTrafficBenchmark {
             AtomicLong failed = new AtomicLong();
             AtomicLong routes = new AtomicLong();
             AtomicLong charges = new AtomicLong();
+            AtomicLong emptied = new AtomicLong();
             Map<String, Long> lastProgress = new ConcurrentHashMap<>();
             Map<String, Boolean> busy = new ConcurrentHashMap<>();
             // what each courier's thread does now: a standstill's report names who waits for what outside the table too
@@ -186,10 +195,25 @@ public final class BuildingTrafficBenchmark {
                             String stop = stops.get(k);
                             boolean charge = false;
                             String from = where(agv);
-                            if (!from.equals(LobbyParking.DOCK) && battery(agv) < RECHARGE_BELOW) {
-                                // to the dock before the next leg: a node of the traffic map for one courier, queued for in
-                                // the reservation table like any other (it was a semaphore outside the table, whose waits
-                                // closed cycles no rule saw: session 12's standstills)
+                            if (batteryEmpty(agv)) {
+                                // it cannot drive (master control has it lost where it stands): it waits for the staff's
+                                // rescue, with no task, so that the standstills count the couriers that could move
+                                emptied.incrementAndGet();
+                                timed.accept("benchmark: " + agv.name() + "'s battery is empty at " + from + "; it waits for the staff");
+                                busy.put(agv.name(), false);
+                                phase.put(agv.name(), "battery empty at " + from + ", waits for the staff");
+                                while (running.get() && batteryEmpty(agv)) {
+                                    sleep(200);
+                                }
+                                ok = false;
+                                break;
+                            }
+                            if (!from.equals(LobbyParking.DOCK) && !reserve.covers(battery(agv), path(map, from, stop))) {
+                                // to the dock before the next leg, urgent (rule 3's precedence case): a node of the traffic
+                                // map for one courier, queued for in the reservation table like any other (it was a semaphore
+                                // outside the table, whose waits closed cycles no rule saw: session 12's standstills)
+                                timed.accept(String.format(Locale.ROOT, "benchmark: %s at %.1f %% charges first: %s to %s takes %s", agv.name(), battery(agv), from,
+                                        stop, reserve.explain(path(map, from, stop))));
                                 stop = LobbyParking.DOCK;
                                 charge = true;
                                 k--;
@@ -198,7 +222,7 @@ public final class BuildingTrafficBenchmark {
                                 List<String> path = path(map, from, stop);
                                 routes.incrementAndGet();
                                 phase.put(agv.name(), "drives " + path + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
-                                ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path)) : driveEdges(agv, path);
+                                ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path), charge) : driveEdges(agv, path);
                             }
                             if (charge && ok) {
                                 phase.put(agv.name(), "charges on the dock");
@@ -278,7 +302,9 @@ public final class BuildingTrafficBenchmark {
             Files.write(dir.resolve("master.log"), new ArrayList<>(log));
             System.err.println("logs (building, master) in " + dir);
             System.err.printf(Locale.ROOT, "longest still: %.0f s, %s%n", longestStill, longestStillOf);
-            System.err.printf(Locale.ROOT, "dock: %d charges, lowest battery %.1f %%%n", charges.get(), lowestBattery);
+            System.err.printf(Locale.ROOT, "dock: %d charges, lowest battery %.1f %%, %d batteries ran empty, %d rescues%n", charges.get(), lowestBattery,
+                    emptied.get(), building.lines("rescue courier-").size());
+            building.lines("rescue courier-").forEach(l -> System.err.println("rescue (" + n + " robots, reserved " + reserved + "): " + l));
             Matcher m = SIMULATED.matcher(building.output());
             double simSeconds = (System.nanoTime() - start) / 1e9 * speed;
             while (m.find()) {
@@ -299,7 +325,8 @@ public final class BuildingTrafficBenchmark {
                 return null;
             });
             return new Row(n, reserved, contacts, standstills, longestStill, simSeconds / 3600, tasks.get(), failed.get(), doorWaits, liftWaits, laneWaits,
-                    cpu, routes.get(), reserved ? traffic.requests() : 0, new ArrayList<>(log).stream().filter(l -> l.contains(" steps aside ")).count(), charges.get());
+                    cpu, routes.get(), reserved ? traffic.requests() : 0, new ArrayList<>(log).stream().filter(l -> l.contains(" steps aside ")).count(), charges.get(),
+                    lowestBattery, building.lines("rescue courier-").size());
         }
     }
 
@@ -308,10 +335,21 @@ public final class BuildingTrafficBenchmark {
      * its decision point) returns while the AGV still drives there: its order ends first.
      */
     /**
-     * The charge below which a courier goes to the dock before its next leg, percent: a leg is at most about 60 m (30 %
-     * at the courier's 0.5 % per metre), and from there the dock as far again.
+     * What a courier keeps in hand beyond its next leg and the way from there back to the dock, percent (24 m at 0.5 %
+     * a metre): what it may drive that the map's lanes do not say before it is at the dock. One step aside there and back
+     * on the ring's longest lane between junctions (2 x 8 m: a refusal ends the leg, and the next is checked again) and
+     * one room aside after a wait over the bound (2 x 3.7 m); waits cost nothing (the battery drains by the metre), backing
+     * off a blocked lane is under a metre, and on the way to the dock, urgent, it is neither displaced by plain couriers
+     * nor asked to make way. More is the exception (two urgent couriers head to head), which the staff's rescue shows.
      */
-    private static final double RECHARGE_BELOW = 60;
+    static final double MARGIN_PERCENT = 12;
+    /** Simulated seconds an empty courier stands before the staff swap its battery ({@link BatteryRescue}). */
+    static final double RESCUE_AFTER_SECONDS = 300;
+
+    private static boolean batteryEmpty(RemoteAgv agv) {
+        return agv.state().map(s -> s.batteryState() != null && !s.batteryState().charging() && s.batteryState().batteryCharge() <= 0).orElse(false);
+    }
+
     private static double battery(RemoteAgv agv) {
         return agv.state().map(s -> s.batteryState() == null ? 100.0 : s.batteryState().batteryCharge()).orElse(100.0);
     }

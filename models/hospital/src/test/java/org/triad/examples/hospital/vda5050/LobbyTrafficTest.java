@@ -132,4 +132,24 @@ class LobbyTrafficTest {
         assertEquals(List.of(), LobbyRoutes.of(traffic).toParking("courier-99", "c4"), "nowhere to park");
         assertEquals(List.of("c4", "lobby"), LobbyRoutes.of(traffic).route("courier-99", "c4", "c4", "lobby"));
     }
+
+    /**
+     * Every lane of the map has the metres a courier drives on it (the models' distances, the ride into the cabin and out),
+     * so that a courier's reserve for the dock is measured on the map: from the upper floor's far ward, 45.5 m back to the
+     * dock, through the lift.
+     */
+    @Test
+    void everyLaneHasItsMetresAndTheWayBackToTheDockIsMeasuredOnThem() {
+        HospitalFloor floor = new HospitalFloor();
+        for (String a : MAP.nodeIds()) {
+            for (String b : MAP.neighbours(a)) {
+                assertEquals(org.triad.examples.hospital.SimulatedBuilding.routeLength(floor, a, b), MAP.length(a, b).orElseThrow(), 1e-9, a + "-" + b);
+            }
+        }
+        org.triad.building.ChargeReserve reserve = new org.triad.building.ChargeReserve(MAP, LobbyParking.DOCK,
+                org.triad.examples.hospital.HospitalObjects.DRAIN_PERCENT_PER_METRE, 10, null);
+        assertEquals(List.of("ward5", "d2", "d1", "c7", "c6", "c5", "c4", "lobby", LobbyParking.DOCK), reserve.wayToDock("ward5"));
+        assertEquals(45.5, reserve.metres(reserve.wayToDock("ward5")), 0.1);
+        assertEquals(45.5 * 0.5 + 10, reserve.reserveAt("ward5"), 0.1);
+    }
 }
