@@ -115,19 +115,24 @@ public final class TrafficControl {
     /**
      * A robot refused as a deadlock has no free neighbour to step aside to: the first other robot of the cycle that
      * waits and has one is asked to make way instead (its wait is withdrawn at its next state and it steps aside; see
-     * {@link #makeWay}). Returns that robot, if any.
+     * {@link #makeWay}). Returns that robot, if any. Never a guide (it would leave its person behind); a robot driving to
+     * charge below its reserve (urgent) only when no plain robot of the cycle can: its way forward runs through the
+     * refused robot's place then, which that one cannot leave (the first 5-courier run with urgent robots never asked
+     * jammed the ring at c4 for good: courier-5, charged, at c4 head to head with urgent courier-2 at c5, nowhere to go).
      */
     synchronized Optional<String> askToMakeWay(String refused, List<String> cycle) {
-        for (String w : cycle) {
-            // never a robot guiding a person (it would leave its person behind) nor one driving to charge below its reserve
-            // (it may not have the metres): see ReservationTable's precedence case; nor a robot refused more often than the
-            // one with nowhere to go: that would undo rule 3's aging case
-            if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent() && !table.precedence(w).overridesPlain()
-                    && (!table.robots().contains(refused) || table.refusals(w) <= table.refusals(refused)) && wayOut(w, cycle).isPresent()) {
-                makingWay.add(w);
-                makingWayFor.put(w, List.copyOf(cycle));
-                log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to");
-                return Optional.of(w);
+        for (boolean urgentToo : List.of(false, true)) {
+            for (String w : cycle) {
+                // nor a robot refused more often than the one with nowhere to go: that would undo rule 3's aging case
+                if (!w.equals(refused) && table.robots().contains(w) && table.waiting(w).isPresent()
+                        && (table.precedence(w) == Precedence.PLAIN || urgentToo && table.precedence(w) == Precedence.URGENT)
+                        && (!table.robots().contains(refused) || table.refusals(w) <= table.refusals(refused)) && wayOut(w, cycle).isPresent()) {
+                    makingWay.add(w);
+                    makingWayFor.put(w, List.copyOf(cycle));
+                    log.accept("traffic: " + w + " is asked to make way for " + refused + ", which has nowhere to step aside to"
+                            + (urgentToo ? " (" + w + " drives to charge, but its way runs through there)" : ""));
+                    return Optional.of(w);
+                }
             }
         }
         return Optional.empty();

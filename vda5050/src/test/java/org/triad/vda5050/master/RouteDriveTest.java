@@ -367,11 +367,11 @@ class RouteDriveTest {
     }
 
     /**
-     * Session 14: a robot driving to charge below its reserve (urgent) is not asked to make way for a refused robot with
-     * nowhere to step aside, as a guide is not; the drive's urgency reaches the table as its precedence.
+     * Session 14: a robot driving to charge below its reserve (urgent) is not displaced by a plain robot; the drive's
+     * urgency reaches the table as its precedence.
      */
     @Test
-    void anUrgentRobotIsNotAskedToMakeWayAndItsDriveReachesTheTableAsUrgent() {
+    void anUrgentRobotIsAskedToMakeWayOnlyWhenNoPlainOneCanAndItsDriveReachesTheTableAsUrgent() {
         TrafficMap map = TrafficMap.builder().node("s").node("a").node("b").node("t").edge("s", "a").edge("a", "b").edge("b", "t").build();
         TrafficControl traffic = new TrafficControl(map, 600, line -> { });
         assertTrue(traffic.place("A", "a"));
@@ -382,8 +382,24 @@ class RouteDriveTest {
         assertEquals(Precedence.URGENT, traffic.<Precedence>read(t -> t.precedence("B")));
         Decision.Refused refused = assertInstanceOf(Decision.Refused.class, traffic.request("A", List.of("a", "b")), "A does not displace B");
         assertTrue(traffic.wayOut("B", refused.cycle()).isPresent(), "B could step aside to t");
-        assertTrue(traffic.askToMakeWay("A", refused.cycle()).isEmpty(), "but it drives to charge");
         assertTrue(traffic.read(t -> t.waiting("B")).isPresent());
+        // a plain robot of the cycle is asked first; here there is none, and A has nowhere to go: B's way runs through A's
+        // place, so B is asked after all (the ring jammed for good when it never was)
+        assertEquals(java.util.Optional.of("B"), traffic.askToMakeWay("A", refused.cycle()));
+    }
+
+    /** Of a plain and an urgent robot that could make way for a refused robot with nowhere to go, the plain one is asked. */
+    @Test
+    void aPlainRobotIsAskedToMakeWayBeforeAnUrgentOne() {
+        TrafficMap map = TrafficMap.builder().node("s").node("a").node("b").node("c").node("t").node("u")
+                .edge("s", "a").edge("a", "b").edge("b", "c").edge("c", "t").edge("b", "u").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("U", "a"));
+        assertTrue(traffic.place("P", "c"));
+        assertTrue(traffic.place("R", "b"));
+        assertInstanceOf(Decision.Waiting.class, traffic.request("U", List.of("a", "b"), Precedence.URGENT));
+        assertInstanceOf(Decision.Waiting.class, traffic.request("P", List.of("c", "b"), Precedence.PLAIN));
+        assertEquals(java.util.Optional.of("P"), traffic.askToMakeWay("R", List.of("R", "U", "P")));
     }
 
     /** A robot lost where its battery ran empty is not waited for: a request through its place is refused at once, with the reason. */

@@ -46,8 +46,8 @@ import org.triad.vda5050.protocol.AgvState;
  * Guides need people and are left out (the building has two, Alice and Bob, not one a courier). A courier's battery
  * drains 0.5 % a metre (issue #22): it takes its next leg only if its charge covers the leg, the way back to the dock and
  * a margin ({@link ChargeReserve} on the traffic map's lanes, {@value #MARGIN_PERCENT} %), else it drives to the dock (a
- * node of the traffic map, {@link LobbyParking#DOCK}: couriers queue for it in the reservation table) as an urgent drive
- * (rule 3's precedence case) and charges first; without charging every courier ran flat after some 200 m and stood, and
+ * node of the traffic map, {@link LobbyParking#DOCK}: couriers queue for it in the reservation table), urgent (rule 3's
+ * precedence case) when its charge is below its reserve where it stands, and charges first; without charging every courier ran flat after some 200 m and stood, and
  * the rows measured dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
  * the building's staff, who swap its battery where it stands after {@value #RESCUE_AFTER_SECONDS} simulated seconds
  * ({@code --rescue-after}), and every such rescue is a column of the table.
@@ -194,6 +194,7 @@ public final class BuildingTrafficBenchmark {
                         for (int k = 0; k < stops.size(); k++) {
                             String stop = stops.get(k);
                             boolean charge = false;
+                            boolean urgent = false;
                             String from = where(agv);
                             if (batteryEmpty(agv)) {
                                 // it cannot drive (master control has it lost where it stands): it waits for the staff's
@@ -209,11 +210,14 @@ public final class BuildingTrafficBenchmark {
                                 break;
                             }
                             if (!from.equals(LobbyParking.DOCK) && !reserve.covers(battery(agv), path(map, from, stop))) {
-                                // to the dock before the next leg, urgent (rule 3's precedence case): a node of the traffic
-                                // map for one courier, queued for in the reservation table like any other (it was a semaphore
-                                // outside the table, whose waits closed cycles no rule saw: session 12's standstills)
-                                timed.accept(String.format(Locale.ROOT, "benchmark: %s at %.1f %% charges first: %s to %s takes %s", agv.name(), battery(agv), from,
-                                        stop, reserve.explain(path(map, from, stop))));
+                                // to the dock before the next leg: a node of the traffic map for one courier, queued for in
+                                // the reservation table like any other (it was a semaphore outside the table, whose waits
+                                // closed cycles no rule saw: session 12's standstills); urgent (rule 3's precedence case) only
+                                // below its reserve where it stands, the way to the dock and the margin: every courier
+                                // urgent on its way to charge jammed the ring (the couriers, charged alike, went at once)
+                                urgent = battery(agv) < reserve.reserveAt(from);
+                                timed.accept(String.format(Locale.ROOT, "benchmark: %s at %.1f %% charges first%s: %s to %s takes %s", agv.name(), battery(agv),
+                                        urgent ? ", urgent" : "", from, stop, reserve.explain(path(map, from, stop))));
                                 stop = LobbyParking.DOCK;
                                 charge = true;
                                 k--;
@@ -222,7 +226,7 @@ public final class BuildingTrafficBenchmark {
                                 List<String> path = path(map, from, stop);
                                 routes.incrementAndGet();
                                 phase.put(agv.name(), "drives " + path + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
-                                ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path), charge) : driveEdges(agv, path);
+                                ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path), urgent) : driveEdges(agv, path);
                             }
                             if (charge && ok) {
                                 phase.put(agv.name(), "charges on the dock");
@@ -339,8 +343,8 @@ public final class BuildingTrafficBenchmark {
      * a metre): what it may drive that the map's lanes do not say before it is at the dock. One step aside there and back
      * on the ring's longest lane between junctions (2 x 8 m: a refusal ends the leg, and the next is checked again) and
      * one room aside after a wait over the bound (2 x 3.7 m); waits cost nothing (the battery drains by the metre), backing
-     * off a blocked lane is under a metre, and on the way to the dock, urgent, it is neither displaced by plain couriers
-     * nor asked to make way. More is the exception (two urgent couriers head to head), which the staff's rescue shows.
+     * off a blocked lane is under a metre; a courier that ate into it is urgent on its way to the dock, neither displaced
+     * by plain couriers nor asked to make way while a plain one can. More is the exception, which the staff's rescue shows.
      */
     static final double MARGIN_PERCENT = 12;
     /** Simulated seconds an empty courier stands before the staff swap its battery ({@link BatteryRescue}). */
