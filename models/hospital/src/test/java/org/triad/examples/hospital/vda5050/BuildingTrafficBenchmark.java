@@ -226,6 +226,15 @@ public final class BuildingTrafficBenchmark {
                                 }
                                 phase.put(agv.name(), "rests after a failed drive");
                                 sleep(1000);
+                                if (reserved && running.get()) {
+                                    // off the ring into the lobby, as the fleet parks a courier whose task ended on a junction
+                                    List<String> park = LobbyRoutes.of(traffic).outOfTheWay(agv.name(), where(agv));
+                                    if (!park.isEmpty()) {
+                                        phase.put(agv.name(), "parks out of the way: " + park);
+                                        routes.incrementAndGet();
+                                        agv.driveRoute(park, traffic);
+                                    }
+                                }
                                 break;
                             }
                         }
