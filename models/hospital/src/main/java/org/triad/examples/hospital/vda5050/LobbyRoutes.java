@@ -118,6 +118,23 @@ public final class LobbyRoutes {
         return r;
     }
 
+    /** The ground floor's corridor junctions (its ring): where the others pass, no place to stand idle. */
+    static final java.util.Set<String> JUNCTIONS = java.util.Set.of("c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7");
+
+    /**
+     * Where a robot that stands idle at {@code at} goes to be out of the others' way: a free parking spot, when {@code at} is
+     * a junction of the ground floor's ring ({@link #toParking}); empty when it may stay (in a room, on the upper floor, in
+     * the lobby) or has nowhere to go. Used by the fleet ({@link VdaCourier#parkOutOfTheWay}) when a task ended and by the
+     * dyn4j benchmark after a failed drive: a courier resting on the ring was where the chains of waits ended.
+     */
+    public List<String> outOfTheWay(String robot, String at) {
+        if (at == null || !JUNCTIONS.contains(at)) {
+            return List.of();
+        }
+        List<String> route = toParking(robot, at);
+        return route.size() < 2 ? List.of() : route;
+    }
+
     /**
      * {@code action} (or null) along the route's models' edge {@code src -> dst}; the lanes of the lobby's parking before
      * and after it are plain drives.

@@ -70,9 +70,6 @@ public final class VdaCourier implements IRobot, FailureExplaining {
         return true;
     }
 
-    /** The ground floor's corridor junctions: where the others pass, no place to stand idle. */
-    private static final java.util.Set<String> JUNCTIONS = java.util.Set.of("c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7");
-
     /**
      * Off the ground floor's corridor onto a free parking spot in the lobby, a reserved drive, when the courier stands idle
      * on a junction of it (the fleet calls this when its task ended, before it takes the next): a task that congestion
@@ -80,12 +77,11 @@ public final class VdaCourier implements IRobot, FailureExplaining {
      * on. Says where it went, or why not; empty when it stays (not on a junction, no traffic control, no free spot).
      */
     public Optional<String> parkOutOfTheWay() {
-        String at = reportedNode();
-        if (traffic == null || at == null || !JUNCTIONS.contains(at)) {
+        if (traffic == null) {
             return Optional.empty();
         }
-        List<String> route = LobbyRoutes.of(traffic).toParking(agv.name(), at);
-        if (route.size() < 2) {
+        List<String> route = LobbyRoutes.of(traffic).outOfTheWay(agv.name(), reportedNode());
+        if (route.isEmpty()) {
             return Optional.empty();
         }
         return Optional.of(agv.driveRoute(route, traffic) ? "parked out of the way: " + String.join(" -> ", route)

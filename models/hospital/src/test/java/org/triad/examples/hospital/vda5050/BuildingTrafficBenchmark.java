@@ -222,7 +222,20 @@ public final class BuildingTrafficBenchmark {
                                 charge = true;
                                 k--;
                             }
-                            if (!from.equals(stop)) {
+                            if (charge && reserved && !LobbyParking.isPlace(from)) {
+                                // into the lobby first, onto a free spot, and queue for the dock there, as the fleet's
+                                // Recharge(lobby) does: queued on the way (at c4, the lobby's door), a courier held the ring's
+                                // node that the dock's holder needed to leave (session 14, admission runs)
+                                String spot = LobbyRoutes.of(traffic).freeSpot(agv.name()).orElse(null);
+                                if (spot != null) {
+                                    List<String> in = path(map, from, spot);
+                                    routes.incrementAndGet();
+                                    phase.put(agv.name(), "drives " + in + " to queue for the dock" + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
+                                    ok = agv.driveRoute(in, traffic, edgeActions(in));
+                                    from = where(agv);
+                                }
+                            }
+                            if (ok && !from.equals(stop)) {
                                 List<String> path = path(map, from, stop);
                                 routes.incrementAndGet();
                                 phase.put(agv.name(), "drives " + path + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
@@ -241,6 +254,15 @@ public final class BuildingTrafficBenchmark {
                                 }
                                 phase.put(agv.name(), "rests after a failed drive");
                                 sleep(1000);
+                                if (reserved && running.get()) {
+                                    // off the ring into the lobby, as the fleet parks a courier whose task ended on a junction
+                                    List<String> park = LobbyRoutes.of(traffic).outOfTheWay(agv.name(), where(agv));
+                                    if (!park.isEmpty()) {
+                                        phase.put(agv.name(), "parks out of the way: " + park);
+                                        routes.incrementAndGet();
+                                        agv.driveRoute(park, traffic);
+                                    }
+                                }
                                 break;
                             }
                         }

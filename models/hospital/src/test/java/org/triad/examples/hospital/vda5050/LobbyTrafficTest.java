@@ -114,6 +114,21 @@ class LobbyTrafficTest {
     }
 
     @Test
+    void onlyACourierIdleOnTheRingIsSentOutOfTheWay() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        traffic.place("courier-1", "c5");
+        traffic.place("courier-2", "ward3");
+        traffic.place("courier-3", "lobby.2");
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        List<String> fromC5 = lobby.outOfTheWay("courier-1", "c5");
+        assertEquals(List.of("c5", "c4", "lobby"), fromC5.subList(0, 3));
+        assertTrue(LobbyParking.spots().contains(fromC5.get(3)) && !fromC5.get(3).equals("lobby.2"), fromC5.toString());
+        assertEquals(List.of(), lobby.outOfTheWay("courier-2", "ward3"), "a room is out of the way");
+        assertEquals(List.of(), lobby.outOfTheWay("courier-3", "lobby.2"), "parked already");
+        assertEquals(List.of(), lobby.outOfTheWay("courier-1", null), "no state yet");
+    }
+
+    @Test
     void aCourierArrivingParksOnASpotWithNobodyBesideIt() {
         TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
         traffic.place("courier-1", "lobby.1");
