@@ -23,7 +23,7 @@ import org.triad.service.Views.TaskView;
  * with the failures' causes). Wall seconds; the benchmark multiplies by its speed for simulated ones.
  */
 final class TaskTimeSplit {
-    private static final Pattern STARTED = Pattern.compile("^action \\d+/\\d+ (\\w+)\\(");
+    private static final Pattern STARTED = Pattern.compile("^action \\d+/\\d+ ([\\w.]+)\\(");
     private final Map<String, Double> robotSeconds = new TreeMap<>();
     private long lastSample;
 
@@ -62,6 +62,7 @@ final class TaskTimeSplit {
         for (TaskView t : tasks) {
             List<EventView> ev = t.events();
             String action = "?";
+            boolean onRobot = false;
             for (int i = 0; i + 1 < ev.size(); i++) {
                 EventView a = ev.get(i);
                 EventView b = ev.get(i + 1);
@@ -69,9 +70,13 @@ final class TaskTimeSplit {
                     Matcher m = STARTED.matcher(a.text());
                     action = m.find() ? m.group(1) : "?";
                 }
+                if (a.kind().equals("dispatched")) {
+                    onRobot = true;
+                } else if (Set.of("task_completed", "task_aborted", "congestion_requeued", "interrupted", "refused").contains(a.kind())) {
+                    onRobot = false;
+                }
                 double s = Duration.between(Instant.parse(a.at()), Instant.parse(b.at())).toNanos() / 1e9;
-                String what = switch (b.kind()) {
-                    case "dispatched" -> "waiting for dispatch (queued, waiting for an object, paused after congestion)";
+                String what = !onRobot ? "waiting for dispatch (queued, waiting for an object, paused after congestion or a stop)" : switch (b.kind()) {
                     case "plan_found" -> "planning (after start, a goal, or a failure)";
                     case "action_succeeded" -> "action " + action + ", succeeded";
                     case "action_failed" -> "action " + action + ", failed";
