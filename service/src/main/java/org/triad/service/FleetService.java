@@ -97,6 +97,13 @@ public final class FleetService implements AutoCloseable {
     private volatile TaskCall chargingCall;
     /** Robots low on battery that were sent to charge, with the charging task: one task per time below the threshold. */
     private final Map<String, Long> sentToCharge = new ConcurrentHashMap<>();
+    /**
+     * Tasks stopped because their robot ran low while it worked, with that robot: queued again for it (it may carry their
+     * objects), to run once it has charged; any robot takes them when it leaves dispatch or cannot charge.
+     */
+    private final Map<Long, String> chargingStopped = new ConcurrentHashMap<>();
+    /** How a stop for charging begins ({@link RobotLane#stop}): the task is queued again for its robot, its objects kept. */
+    private static final String CHARGING_STOP = "stopped to charge first: ";
     private final List<Consumer<LiveEvent>> listeners = new CopyOnWriteArrayList<>();
     private final Object lock = new Object();
     private final Map<Long, Integer> priorities = new ConcurrentHashMap<>();
@@ -551,7 +558,14 @@ public final class FleetService implements AutoCloseable {
         return c != null && call != null && preferred.containsKey(id) && call.task().equals(c.task()) && call.args().equals(c.args());
     }
 
-    /** Queues the charging task for each idle online robot that fell below the threshold; call with the lock held. */
+    /**
+     * Queues the charging task for each online robot that fell below the threshold and stops the task such a robot runs,
+     * at its next step (queued again for it; see {@link #chargingStopped}): a robot that went on working below the threshold
+     * in a jammed task drained its battery on refused drives and steps aside, arrived idle with less than its charging
+     * task needs (refused: the models keep a reserve), and stood for good where its task left it, often on a corridor node
+     * in the others' way (the service's mixed benchmark: a courier at 0 %, BATTERY_EMPTY, holding a ring node). Call
+     * with the lock held.
+     */
     private void sendToCharge(List<Long> published) {
         ChargingPolicy policy = charging;
         if (policy == null) {
@@ -563,8 +577,18 @@ public final class FleetService implements AutoCloseable {
                 sentToCharge.remove(l.name());
                 continue;
             }
-            if (chargingCall == null || !l.online() || sentToCharge.containsKey(l.name())
-                    || queue.stream().anyMatch(id -> l.name().equals(preferred.get(id)) && chargingTask(id))) {
+            if (chargingCall == null || !l.online()) {
+                continue;
+            }
+            Long sent = sentToCharge.get(l.name());
+            Optional<Long> running = l.currentTask();
+            if (sent != null && running.isPresent() && !running.get().equals(sent) && l.stopReason().isEmpty()) {
+                String why = String.format(java.util.Locale.ROOT, "%srobot %s reports %.0f %% battery, below %.0f %%, while it works; queued again for it (task %d charges it)",
+                        CHARGING_STOP, l.name(), low, policy.below(), sent);
+                l.stop(why);
+                System.err.println("triad serve: task " + running.get() + ": " + why);
+            }
+            if (sent != null || queue.stream().anyMatch(id -> l.name().equals(preferred.get(id)) && chargingTask(id))) {
                 continue;
             }
             Instant now = clock.instant();
@@ -876,7 +900,8 @@ public final class FleetService implements AutoCloseable {
             }
             String wanted = preferred.get(id);
             // queued again after congestion on a robot that has left dispatch since: any robot takes it
-            String want = wanted != null && notBefore.containsKey(id) && (lanes.get(wanted) == null || !lanes.get(wanted).online()) ? null : wanted;
+            String want = wanted != null && (notBefore.containsKey(id) || chargingStopped.containsKey(id))
+                    && (lanes.get(wanted) == null || !lanes.get(wanted).online()) ? null : wanted;
             List<RobotLane> candidates = want == null ? idle : idle.stream().filter(l -> l.name().equals(want)).toList();
             // a robot low on battery takes only its charging task
             candidates = candidates.stream().filter(l -> lowCharge(l) == null || chargingTask(id)).toList();
@@ -954,6 +979,7 @@ public final class FleetService implements AutoCloseable {
             queue.remove(choice.task());
             preferred.remove(choice.task());
             notBefore.remove(choice.task());
+            chargingStopped.remove(choice.task());
             claims.release(choice.task()); // what it kept while queued again after congestion: taken afresh, on this robot
             claims.take(choice.task(), best.name(), claimed(choice.task(), choice.call()));
             dispatchedAt.put(choice.task(), now);
@@ -1037,11 +1063,27 @@ public final class FleetService implements AutoCloseable {
         } finally {
             if (last) {
                 synchronized (lock) {
+                    boolean toCharge = stop != null && stop.startsWith(CHARGING_STOP) && !stopAborts && dispatching;
                     if (stop != null && !stop.startsWith("cancelled") && !LEASE_LOST.equals(stop) && !stopAborts && dispatching) {
+                        if (toCharge) {
+                            preferred.put(taskId, lane.name());
+                            chargingStopped.put(taskId, lane.name());
+                        }
                         queue.add(taskId);
                     }
+                    if (taskId == sentToCharge.getOrDefault(lane.name(), -1L) && lowCharge(lane) != null) {
+                        // its charging task ended and it is still low (it could not reach the dock): what it was stopped
+                        // for goes to any robot, which plans it from the building's state (or is refused with the reason)
+                        chargingStopped.entrySet().removeIf(e -> {
+                            if (e.getValue().equals(lane.name())) {
+                                preferred.remove(e.getKey());
+                                return true;
+                            }
+                            return false;
+                        });
+                    }
                     Instant began = dispatchedAt.remove(taskId);
-                    if (again != null) {
+                    if (again != null || toCharge) {
                         // it keeps what it holds (the robot may carry it): no other task gets those objects meanwhile
                         queue.add(taskId);
                     } else {

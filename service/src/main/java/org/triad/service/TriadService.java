@@ -144,8 +144,8 @@ public final class TriadService implements AutoCloseable {
         }
     }
 
-    /** Where the robots' traffic controls show their waits (the operator page's traffic section). */
-    TrafficBoard traffic() {
+    /** Where the robots' traffic controls show their waits (the operator page's traffic section; benchmarks sample it). */
+    public TrafficBoard traffic() {
         return traffic;
     }
 

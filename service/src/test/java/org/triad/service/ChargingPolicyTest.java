@@ -67,6 +67,29 @@ class ChargingPolicyTest {
         }
     }
 
+    /**
+     * dry-1 starts at 45 % and each action takes 10 %: it falls below 30 % during a patrol, which is stopped at its next
+     * step and queued again for it, and its charging task runs on it first. A dry robot does not charge, so it is still
+     * low after its charging task: the patrol then goes to dry-2, which completes it. Without the stop dry-1 ran the
+     * patrol to its end below the threshold (a courier in a jam ran flat that way and stood in the others' way for good).
+     */
+    @Test
+    void aRobotThatRunsLowWhileItWorksStopsItsTaskAndChargesFirst() throws Exception {
+        try (ServiceFixture s = withProperties("charging.below=30\ncharging.task=GoTo\ncharging.args={\"dst\": \"lobby\"}\n",
+                () -> ServiceFixture.start(dir.resolve("db"), "dry:1,state=Morning,battery=45,drain=10,delay=300", "dry:1,state=Morning,delay=300"))) {
+            long patrol = s.submit("Patrol", "{\"a\": \"ward1\", \"b\": \"storage\", \"c\": \"ward3\"}");
+            JsonNode done = s.awaitState(patrol, "completed");
+            String timeline = done.get("events").toString();
+            assertTrue(timeline.contains("stopped to charge first: robot dry-1 reports ") && timeline.contains("below 30 %, while it works; queued again for it"),
+                    timeline);
+            JsonNode charging = s.awaitTask(patrol + 1, t -> t.path("state").asText().equals("completed"));
+            assertEquals("GoTo", charging.get("task").asText(), charging.toString());
+            assertEquals("dry-1", charging.get("robot").asText(), "the charging task ran on the robot that ran low: " + charging);
+            assertEquals("dry-2", done.get("robot").asText(), "dry-1, still low after its charging task, left the patrol to dry-2: " + timeline);
+            assertEquals(2, s.get("/api/tasks", ServiceFixture.SUBMIT).body().size(), "one charging task: " + s.get("/api/tasks", ServiceFixture.SUBMIT).body());
+        }
+    }
+
     @Test
     void aChargingTaskThatDoesNotFitTheModelsStopsTheStartWithTheReason() throws Exception {
         ServiceError e = assertThrows(ServiceError.class, () -> withProperties("charging.below=20\ncharging.task=Recharge\n",

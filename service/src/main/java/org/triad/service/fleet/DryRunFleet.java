@@ -14,7 +14,7 @@ import org.triad.runtime.app.State;
  * Scheme {@code dry}, for every application: robots whose actions do exactly what their
  * postconditions say, in the fleet's one building (a {@link SharedWorld}: what one robot picks up is
  * gone for the others), like {@code ./triad run}. Argument
- * {@code N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P]} (a battery reported at P percent, for the charging policy): N robots starting where situation S puts the
+ * {@code N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P[,drain=D]]} (a battery reported at P percent, for the charging policy, less D percent per action executed): N robots starting where situation S puts the
  * robot (default: the service's situation), each action taking MS milliseconds, the first K calls of
  * ACTION failing on every robot (with {@code jam}: as the building's congestion, as traffic control's
  * refusals and waits over the bound end a drive, so that the service queues the task again), or every robot vanishing (its state can no longer be read) after K actions.
@@ -36,7 +36,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
 
     @Override
     public String usage() {
-        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P]  N robots that do what the postconditions say, over a situation";
+        return "dry:N[,state=S][,delay=MS][,fail=ACTION*K|jam=ACTION*K][,gone=K][,battery=P[,drain=D]]  N robots that do what the postconditions say, over a situation";
     }
 
     @Override
@@ -50,6 +50,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
         boolean jam = false;
         int goneAfter = -1;
         int battery = -1;
+        int drain = 0;
         for (int i = 1; i < parts.length; i++) {
             String[] kv = parts[i].split("=", 2);
             if (kv.length != 2) {
@@ -61,6 +62,7 @@ public final class DryRunFleet implements RobotPlatformProvider {
                 case "delay" -> delayMillis = number("dry:...,delay=MS", value, 0, 600_000);
                 case "gone" -> goneAfter = number("dry:...,gone=K", value, 0, Integer.MAX_VALUE);
                 case "battery" -> battery = number("dry:...,battery=PERCENT", value, 0, 100);
+                case "drain" -> drain = number("dry:...,drain=PERCENT", value, 0, 100);
                 case "fail", "jam" -> {
                     String key = kv[0].trim();
                     if (failAction != null) {
@@ -90,6 +92,9 @@ public final class DryRunFleet implements RobotPlatformProvider {
             DryRunRobot r = new DryRunRobot(name, world.modelRobot(name, initial), delayMillis, failAction, failCalls, jam, goneAfter);
             if (battery >= 0) {
                 r.reportBattery(battery);
+                r.drainPerAction(drain);
+            } else if (drain > 0) {
+                throw new IllegalArgumentException("dry:...,drain=" + drain + " drains a reported battery: give it one with battery=PERCENT");
             }
             robots.add(r);
         }

@@ -32,6 +32,8 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
     private volatile boolean lastCongested;
     /** The battery this robot reports (percent, never charging), or null for none: {@code dry:...,battery=P}. */
     private volatile org.triad.refarc.fleet.Battery battery;
+    /** What each action it executes takes of the reported battery, percent ({@code dry:...,drain=D}): a robot running low while it works. */
+    private volatile double drainPerAction;
 
     DryRunRobot(String name, ModelRobot body, long delayMillis, String failAction, int failCalls, boolean jam, int goneAfter) {
         this.jam = jam;
@@ -50,6 +52,10 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
 
     void reportBattery(double percent) {
         battery = new org.triad.refarc.fleet.Battery(percent, false);
+    }
+
+    void drainPerAction(double percent) {
+        drainPerAction = percent;
     }
 
     @Override
@@ -108,6 +114,10 @@ final class DryRunRobot implements FleetRobot, StateSource, ActionRunner, Buildi
             return false;
         }
         executed.incrementAndGet();
+        org.triad.refarc.fleet.Battery b = battery;
+        if (b != null && drainPerAction > 0) {
+            battery = new org.triad.refarc.fleet.Battery(Math.max(0, b.charge() - drainPerAction), false);
+        }
         return true;
     }
 

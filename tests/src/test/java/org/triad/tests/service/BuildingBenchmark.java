@@ -52,6 +52,7 @@ public final class BuildingBenchmark {
         System.out.printf(Locale.ROOT, "building benchmark: %d robots, %d tasks, %.0fx real time; %d cores, Java %s%n", robots, tasks, speed,
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"));
         Process building = null;
+        int[] endedCompleted = { -1, -1 };
         try (MosquittoBroker broker = MosquittoBroker.start(dir.resolve("broker"))) {
             Path log = dir.resolve("building.log");
             building = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx1g", "-cp",
@@ -79,6 +80,7 @@ public final class BuildingBenchmark {
                     ids.add(s.fleet().submit(task(movesOnly ? 2 + i % 2 : i, itemAt)).id());
                 }
                 Map<Long, TaskView> ended = new TreeMap<>();
+                TaskTimeSplit split = new TaskTimeSplit();
                 long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(minutes);
                 while (ended.size() < ids.size() && System.nanoTime() < end) {
                     for (long id : ids) {
@@ -93,17 +95,35 @@ public final class BuildingBenchmark {
                         System.out.println("every robot is out of dispatch; the rest stays queued");
                         break;
                     }
+                    split.sample(s.fleet().robots(), s.traffic().longerThan(0));
                     Thread.sleep(200);
                 }
                 double wall = (System.nanoTime() - t0) / 1e9;
                 double[] cpu = { cpuSeconds(broker.pid()) - cpu0[0], cpuSeconds(building.pid()) - cpu0[1],
                         cpuSeconds(ProcessHandle.current().pid()) - cpu0[2] };
                 report(s, ids, ended, wall, speed, cpu, Files.readAllLines(log));
+                endedCompleted[0] = ended.size();
+                endedCompleted[1] = (int) ended.values().stream().filter(t -> t.state().equals("completed")).count();
+                List<TaskView> all = new ArrayList<>();
+                for (long id = 1; s.fleet().task(id).isPresent(); id++) {
+                    all.add(s.fleet().task(id).orElseThrow()); // the service's own Recharge tasks too
+                }
+                split.print(all, speed);
             }
         } finally {
             if (building != null) {
                 building.destroy();
                 building.waitFor(30, TimeUnit.SECONDS);
+                // the building's own clock, printed as it stops: whether it kept the speed asked for
+                for (String l : Files.readAllLines(dir.resolve("building.log"))) {
+                    java.util.regex.Matcher m = java.util.regex.Pattern.compile("^building: ([0-9.]+) s simulated in").matcher(l);
+                    if (m.find()) {
+                        double hours = Double.parseDouble(m.group(1)) / 3600;
+                        System.out.println(l);
+                        System.out.printf(Locale.ROOT, "by the building's clock: %.0f tasks ended, %.0f completed per simulated hour%n",
+                                endedCompleted[0] / hours, endedCompleted[1] / hours);
+                    }
+                }
             }
         }
     }
@@ -149,6 +169,8 @@ public final class BuildingBenchmark {
             }
         }
         Map<String, Integer> picks = new TreeMap<>();
+        long orders = log.stream().filter(l -> l.contains(": accepted order ")).count();
+        long contacts = log.stream().filter(l -> l.startsWith("contact")).count();
         for (String line : log) {
             for (String item : ITEMS) {
                 if (line.contains(": accepted order ") && line.contains("[pick " + item + "]")) {
@@ -171,6 +193,8 @@ public final class BuildingBenchmark {
         }
         System.out.printf(Locale.ROOT, "queued again after congestion: %d times, %d tasks%n", requeues, requeued);
         System.out.printf(Locale.ROOT, "deliveries completed per item %s, picks accepted per item %s%n", delivered, picks);
+        System.out.printf(Locale.ROOT, "orders the couriers accepted: %d; contact lines in the building's log: %d%n", orders, contacts);
+        System.out.printf(Locale.ROOT, "tasks ended per simulated hour: %.0f%n", ended.size() / (wall * speed / 3600));
         System.out.printf(Locale.ROOT, "tasks completed per simulated hour: %.0f%n", completed / (wall * speed / 3600));
         if (!times.isEmpty()) {
             System.out.printf(Locale.ROOT, "dispatch (choosing the robot, estimates from each idle robot's state): %d dispatches, median %.2f ms, p99 %.2f ms%n",
