@@ -224,9 +224,12 @@ public final class TrafficControl {
                 continue; // a taken dead end off here: who is in it can only come out through where this robot stands
             }
             List<Resource> step = newOnStep(robot, at, n);
-            // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out
+            // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out; nor one held
+            // by a robot it gets out of the way of: it would wait there for that one, which waits for it to leave (session 14:
+            // courier-5 at c6, asked to make way for courier-3 at c7, stepped aside to c3 over the lane past c7, five
+            // times in 100 s, and the robots behind both stood)
             boolean usable = step.stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && table.holders(r).stream()
-                    .noneMatch(h -> table.isLost(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot)));
+                    .noneMatch(h -> table.isLost(h) || outOfTheWayOf.contains(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot)));
             int others = step.stream().mapToInt(r -> othersNeeding(r, robot)).sum();
             if (usable && others < fewest) {
                 best = n;

@@ -416,4 +416,19 @@ class RouteDriveTest {
         assertTrue(traffic.place("B", "b"), "charged, it is back where it stands");
         assertFalse(traffic.isLost("B"));
     }
+
+    /**
+     * A robot getting out of the way of another does not step aside to a place that one holds (here the lane to t runs past
+     * a, where A stands: one zone): it would wait there for A, which waits for it to leave. It has no way out then.
+     */
+    @Test
+    void aRobotDoesNotStepAsideIntoAPlaceHeldByTheRobotItMakesWayFor() {
+        TrafficMap map = TrafficMap.builder().node("a").node("b").node("t").edge("a", "b").edge("b", "t")
+                .area(org.triad.building.traffic.Resource.Kind.ZONE, "passing-a", 1, "a", "b-t").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        assertEquals(java.util.Optional.of("t"), traffic.wayOut("B", List.of()), "out of nobody's way in particular, t would do");
+        assertTrue(traffic.wayOut("B", List.of("A", "B")).isEmpty(), "out of A's way, t is A's");
+    }
 }
