@@ -47,8 +47,9 @@ import org.triad.vda5050.protocol.AgvState;
  * drains 0.5 % a metre (issue #22): it takes its next leg only if its charge covers the leg, the way back to the dock and
  * a margin ({@link ChargeReserve} on the traffic map's lanes, {@value #MARGIN_PERCENT} %), else it drives to the dock (a
  * node of the traffic map, {@link LobbyParking#DOCK}: couriers queue for it in the reservation table), urgent (rule 3's
- * precedence case) when its charge is below its reserve where it stands, and charges first; without charging every courier ran flat after some 200 m and stood, and
- * the rows measured dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
+ * precedence case) when its charge is below its reserve where it stands, and charges first (waiting on a free lobby spot
+ * while the dock is taken); without charging every courier ran flat after some 200 m and stood, and the rows measured
+ * dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
  * the building's staff, who swap its battery where it stands after {@value #RESCUE_AFTER_SECONDS} simulated seconds
  * ({@code --rescue-after}), and every such rescue is a column of the table.
  *
