@@ -535,7 +535,8 @@ public final class RemoteAgv implements FailureExplaining {
         }
         traffic.note("traffic: " + name() + " steps aside from " + from + " to " + side.get() + ", out of the way of "
                 + drive.refusal().map(r -> r.cycle().toString()).orElse("a robot refused as a deadlock"));
-        boolean moved = driveRouteUnder(List.of(from, side.get()), traffic, "step aside " + from + " -> " + side.get(), List.of(), false, false);
+        List<String> aside = traffic.asideRoute(from, side.get());
+        boolean moved = driveRouteUnder(aside, traffic, "step aside " + String.join(" -> ", aside), List.of(), false, false);
         // could not get out of the way: one of the robots it would have waited for makes way instead, as when it had nowhere to go
         Optional<String> other = moved ? Optional.empty() : drive.refusal().flatMap(r -> traffic.askToMakeWay(name(), r.cycle()));
         synchronized (lock) {

@@ -174,21 +174,64 @@ public final class TrafficControl {
      * would all drive to its one waypoint).
      */
     synchronized Optional<String> aside(String robot) {
-        return aside(robot, List.of());
+        return aside(robot, List.of(), false);
     }
 
-    /** {@link #aside(String)} to a place off the way the given robots wait for (see {@link #wayOut(String, List)}). */
-    synchronized Optional<String> aside(String robot, List<String> outOfTheWayOf) {
+    /**
+     * {@link #aside(String)} to a place off the way the given robots wait for (see {@link #wayOut(String, List)}); with
+     * {@code farther}, when no neighbour will do, a free stop node for one behind a neighbour where nobody stops (a lobby
+     * spot behind the hall's centre: {@link #asideRoute}).
+     */
+    synchronized Optional<String> aside(String robot, List<String> outOfTheWayOf, boolean farther) {
         if (!table.robots().contains(robot) || table.isLost(robot)) {
             return Optional.empty();
         }
         String at = table.decisionPoint(robot);
-        for (String n : placesOffTheWay(robot, at, outOfTheWayOf)) {
+        List<String> places = new java.util.ArrayList<>(placesOffTheWay(robot, at, outOfTheWayOf));
+        if (farther) {
+            places.addAll(placesOffTheWay(robot, at, outOfTheWayOf, placesBehindNext(at)));
+        }
+        for (String n : places) {
             if (newOnStep(robot, at, n).stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && othersNeeding(r, robot) + 1 <= r.capacity())) {
                 return Optional.of(n);
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * The free stop nodes for one behind a neighbour of {@code at} that is no stop node and no lift (the lobby's spots
+     * behind the hall's centre), by name. Session 14: a courier at {@code c4}, the lobby's gateway, with its neighbours on
+     * the ring taken had nowhere to step aside to, and the courier on its way to charge that needed {@code c4} was asked to
+     * make way instead, until its battery was empty; the lobby had free spots a hall's width away.
+     */
+    private List<String> placesBehindNext(String at) {
+        java.util.Set<String> out = new java.util.TreeSet<>();
+        for (String mid : table.map().neighbours(at)) {
+            if (table.map().isStop(mid) || table.map().step(at, mid).stream().anyMatch(r -> r.kind() == Resource.Kind.LIFT)) {
+                continue;
+            }
+            for (String n : table.map().neighbours(mid)) {
+                if (!n.equals(at) && !table.map().neighbours(at).contains(n) && table.map().isStop(n) && table.map().node(n).capacity() <= 1
+                        && table.needing(table.map().node(n)).isEmpty()) {
+                    out.add(n);
+                }
+            }
+        }
+        return List.copyOf(out);
+    }
+
+    /** The route of a step aside from {@code at} to {@code n}: the lane between them, or through the one node between (see {@link #placesBehindNext}). */
+    synchronized List<String> asideRoute(String at, String n) {
+        if (table.map().edge(at, n).isPresent()) {
+            return List.of(at, n);
+        }
+        for (String mid : new java.util.TreeSet<>(table.map().neighbours(at))) {
+            if (!table.map().isStop(mid) && table.map().neighbours(mid).contains(n)) {
+                return List.of(at, mid, n);
+            }
+        }
+        throw new IllegalArgumentException("no step aside from '" + at + "' to '" + n + "'");
     }
 
     /**
@@ -211,7 +254,7 @@ public final class TrafficControl {
      * has nowhere to go, and one of them is asked to make way ({@link #askToMakeWay}).
      */
     synchronized Optional<String> wayOut(String robot, List<String> outOfTheWayOf) {
-        Optional<String> free = aside(robot, outOfTheWayOf);
+        Optional<String> free = aside(robot, outOfTheWayOf, true);
         if (free.isPresent() || !table.robots().contains(robot) || table.isLost(robot)) {
             return free;
         }
@@ -224,9 +267,12 @@ public final class TrafficControl {
                 continue; // a taken dead end off here: who is in it can only come out through where this robot stands
             }
             List<Resource> step = newOnStep(robot, at, n);
-            // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out
+            // a place held by a robot that waits for this one would be a wait in a cycle: refused, no way out; nor one held
+            // by a robot it gets out of the way of: it would wait there for that one, which waits for it to leave (session 14:
+            // courier-5 at c6, asked to make way for courier-3 at c7, stepped aside to c3 over the lane past c7, five
+            // times in 100 s, and the robots behind both stood)
             boolean usable = step.stream().allMatch(r -> r.kind() != Resource.Kind.LIFT && table.holders(r).stream()
-                    .noneMatch(h -> table.isLost(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot)));
+                    .noneMatch(h -> table.isLost(h) || outOfTheWayOf.contains(h) || waitsFor.getOrDefault(h, java.util.Set.of()).contains(robot)));
             int others = step.stream().mapToInt(r -> othersNeeding(r, robot)).sum();
             if (usable && others < fewest) {
                 best = n;
@@ -238,13 +284,19 @@ public final class TrafficControl {
 
     /** {@link #placesForOneNextTo} but those the robots' waiting requests need (where standing, or the lane to it, would block them). */
     private List<String> placesOffTheWay(String robot, String at, List<String> others) {
+        return placesOffTheWay(robot, at, others, placesForOneNextTo(at));
+    }
+
+    /** The {@code candidates} whose step aside from {@code at} needs nothing the others' waiting requests need. */
+    private List<String> placesOffTheWay(String robot, String at, List<String> others, List<String> candidates) {
         java.util.Set<Resource> way = new java.util.HashSet<>();
         for (String o : others) {
             if (!o.equals(robot) && table.robots().contains(o)) {
                 way.addAll(table.wanted(o));
             }
         }
-        return placesForOneNextTo(at).stream().filter(n -> table.map().standing(n).stream().noneMatch(way::contains)).toList();
+        return candidates.stream().filter(n -> table.map().standing(n).stream().noneMatch(way::contains)
+                && newOnStep(robot, at, n).stream().noneMatch(way::contains)).toList();
     }
 
     /**
@@ -299,7 +351,12 @@ public final class TrafficControl {
     /** The resources of the step that the robot does not hold yet (a zone it stands in is no obstacle). */
     private List<Resource> newOnStep(String robot, String at, String n) {
         java.util.Set<Resource> held = table.holding(robot);
-        return table.map().step(at, n).stream().filter(r -> !held.contains(r)).toList();
+        List<String> route = asideRoute(at, n);
+        java.util.Set<Resource> step = new java.util.LinkedHashSet<>();
+        for (int i = 1; i < route.size(); i++) {
+            step.addAll(table.map().step(route.get(i - 1), route.get(i)));
+        }
+        return step.stream().filter(r -> !held.contains(r)).toList();
     }
 
     /** How many robots other than this one hold or wait for the resource. */

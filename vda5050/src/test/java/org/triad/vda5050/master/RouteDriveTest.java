@@ -416,4 +416,41 @@ class RouteDriveTest {
         assertTrue(traffic.place("B", "b"), "charged, it is back where it stands");
         assertFalse(traffic.isLost("B"));
     }
+
+    /**
+     * A robot getting out of the way of another does not step aside to a place that one holds (here the lane to t runs past
+     * a, where A stands: one zone): it would wait there for A, which waits for it to leave. It has no way out then.
+     */
+    @Test
+    void aRobotDoesNotStepAsideIntoAPlaceHeldByTheRobotItMakesWayFor() {
+        TrafficMap map = TrafficMap.builder().node("a").node("b").node("t").edge("a", "b").edge("b", "t")
+                .area(org.triad.building.traffic.Resource.Kind.ZONE, "passing-a", 1, "a", "b-t").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("A", "a"));
+        assertTrue(traffic.place("B", "b"));
+        assertEquals(java.util.Optional.of("t"), traffic.wayOut("B", List.of()), "out of nobody's way in particular, t would do");
+        assertTrue(traffic.wayOut("B", List.of("A", "B")).isEmpty(), "out of A's way, t is A's");
+    }
+
+    /**
+     * The lobby's gateway: a robot at c4 whose neighbours on the ring are taken steps aside into the lobby, through the
+     * hall's centre (no stop node) onto a free spot, before an urgent robot that needs c4 is asked to make way.
+     */
+    @Test
+    void aRobotWithItsNeighboursTakenStepsAsideThroughAHallOntoAFreeSpot() {
+        TrafficMap map = TrafficMap.builder().node("c0").node("c4").node("c5").node("lobby").node("spot").node("dock")
+                .edge("c0", "c4").edge("c4", "c5").edge("c4", "lobby").edge("lobby", "spot").edge("lobby", "dock")
+                .area(org.triad.building.traffic.Resource.Kind.CORRIDOR, "hall", 1, "lobby", "c4-lobby", "lobby-spot", "lobby-dock").build();
+        TrafficControl traffic = new TrafficControl(map, 600, line -> { });
+        assertTrue(traffic.place("P", "c4"));
+        assertTrue(traffic.place("U", "c5"));
+        assertTrue(traffic.place("X", "c0"));
+        assertTrue(traffic.place("D", "dock"));
+        assertInstanceOf(Decision.Waiting.class, traffic.request("U", List.of("c5", "c4", "c0"), Precedence.URGENT));
+        Decision.Refused r = assertInstanceOf(Decision.Refused.class, traffic.request("P", List.of("c4", "c5")));
+        assertTrue(traffic.aside("P").isEmpty(), "no free neighbour for one");
+        assertEquals(java.util.Optional.of("spot"), traffic.wayOut("P", r.cycle()), "the free spot behind the hall");
+        assertEquals(List.of("c4", "lobby", "spot"), traffic.asideRoute("c4", "spot"));
+        assertInstanceOf(Decision.Granted.class, traffic.request("P", traffic.asideRoute("c4", "spot")), "one stretch, all or nothing");
+    }
 }

@@ -47,8 +47,9 @@ import org.triad.vda5050.protocol.AgvState;
  * drains 0.5 % a metre (issue #22): it takes its next leg only if its charge covers the leg, the way back to the dock and
  * a margin ({@link ChargeReserve} on the traffic map's lanes, {@value #MARGIN_PERCENT} %), else it drives to the dock (a
  * node of the traffic map, {@link LobbyParking#DOCK}: couriers queue for it in the reservation table), urgent (rule 3's
- * precedence case) when its charge is below its reserve where it stands, and charges first; without charging every courier ran flat after some 200 m and stood, and
- * the rows measured dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
+ * precedence case) when its charge is below its reserve where it stands, and charges first (waiting on a free lobby spot
+ * while the dock is taken); without charging every courier ran flat after some 200 m and stood, and the rows measured
+ * dead couriers. A courier whose battery runs empty all the same is lost on the traffic map, waits for
  * the building's staff, who swap its battery where it stands after {@value #RESCUE_AFTER_SECONDS} simulated seconds
  * ({@code --rescue-after}), and every such rescue is a column of the table.
  *
@@ -237,6 +238,17 @@ public final class BuildingTrafficBenchmark {
                             }
                             if (ok && !from.equals(stop)) {
                                 List<String> path = path(map, from, stop);
+                                if (charge && reserved && !LobbyParking.isPlace(from) && dockTaken(traffic, agv.name())) {
+                                    // the dock is taken: to a free spot in the lobby first, and from there to the dock (the
+                                    // next round of this loop). Waiting at c4 for the dock, it stood on the way out of the
+                                    // courier charging there: each waited for the other, and the one at c4 stepped aside
+                                    // onto the ring, metres it lacked (the first runs of session 14)
+                                    List<String> toSpot = LobbyRoutes.of(traffic).toParking(agv.name(), from);
+                                    if (!toSpot.isEmpty()) {
+                                        path = toSpot;
+                                        charge = false;
+                                    }
+                                }
                                 routes.incrementAndGet();
                                 phase.put(agv.name(), "drives " + path + String.format(Locale.ROOT, " (battery %.0f %%)", battery(agv)));
                                 ok = reserved ? agv.driveRoute(path, traffic, edgeActions(path), urgent) : driveEdges(agv, path);
@@ -371,6 +383,11 @@ public final class BuildingTrafficBenchmark {
     static final double MARGIN_PERCENT = 12;
     /** Simulated seconds an empty courier stands before the staff swap its battery ({@link BatteryRescue}). */
     static final double RESCUE_AFTER_SECONDS = 300;
+
+    /** Whether a courier other than this one holds the dock or waits for it. */
+    private static boolean dockTaken(TrafficControl traffic, String robot) {
+        return traffic.read(t -> t.needing(t.map().node(LobbyParking.DOCK)).stream().anyMatch(r -> !r.equals(robot)));
+    }
 
     private static boolean batteryEmpty(RemoteAgv agv) {
         return agv.state().map(s -> s.batteryState() != null && !s.batteryState().charging() && s.batteryState().batteryCharge() <= 0).orElse(false);
