@@ -123,11 +123,15 @@ public final class LobbyRoutes {
 
     /**
      * Where a robot that stands idle at {@code at} goes to be out of the others' way: a free parking spot, when {@code at} is
-     * a junction of the ground floor's ring ({@link #toParking}); empty when it may stay (in a room, on the upper floor, in
-     * the lobby) or has nowhere to go. Used by the fleet ({@link VdaCourier#parkOutOfTheWay}) when a task ended and by the
-     * dyn4j benchmark after a failed drive: a courier resting on the ring was where the chains of waits ended.
+     * a junction of the ground floor's ring ({@link #toParking}) or the dock; empty when it may stay (in a room, on the upper
+     * floor, on a spot) or has nowhere to go. Used by the fleet ({@link VdaCourier#parkOutOfTheWay}) when a task ended and by
+     * the dyn4j benchmark after a failed drive: a courier resting on the ring was where the chains of waits ended, and one
+     * resting on the dock after its charge kept the couriers queued for the dock waiting.
      */
     public List<String> outOfTheWay(String robot, String at) {
+        if (LobbyParking.DOCK.equals(at)) {
+            return freeSpot(robot).map(spot -> List.of(LobbyParking.DOCK, LobbyParking.HALL, spot)).orElse(List.of());
+        }
         if (at == null || !JUNCTIONS.contains(at)) {
             return List.of();
         }

@@ -126,6 +126,10 @@ class LobbyTrafficTest {
         assertEquals(List.of(), lobby.outOfTheWay("courier-2", "ward3"), "a room is out of the way");
         assertEquals(List.of(), lobby.outOfTheWay("courier-3", "lobby.2"), "parked already");
         assertEquals(List.of(), lobby.outOfTheWay("courier-1", null), "no state yet");
+        traffic.place("courier-4", LobbyParking.DOCK);
+        List<String> offTheDock = lobby.outOfTheWay("courier-4", LobbyParking.DOCK);
+        assertEquals(List.of(LobbyParking.DOCK, LobbyParking.HALL), offTheDock.subList(0, 2), "off the dock, free for the next");
+        assertTrue(LobbyParking.spots().contains(offTheDock.get(2)), offTheDock.toString());
     }
 
     @Test
