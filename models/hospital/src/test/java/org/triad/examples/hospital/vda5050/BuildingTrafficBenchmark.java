@@ -194,11 +194,11 @@ public final class BuildingTrafficBenchmark {
                                 charge = true;
                                 k--;
                             }
-                            if (charge && reserved && !LobbyParking.isPlace(from)) {
+                            if (charge && reserved && !LobbyParking.isPlace(from) && !from.equals(LobbyParking.HALL)) {
                                 // into the lobby first, onto a free spot, and queue for the dock there, as the fleet's
                                 // Recharge(lobby) does: queued on the way (at c4, the lobby's door), a courier held the ring's
                                 // node that the dock's holder needed to leave (session 14, admission runs)
-                                String spot = LobbyRoutes.of(traffic).freeSpot(agv.name()).orElse(null);
+                                String spot = LobbyRoutes.of(traffic).spotApart(agv.name()).orElse(null);
                                 if (spot != null) {
                                     List<String> in = path(map, from, spot);
                                     routes.incrementAndGet();

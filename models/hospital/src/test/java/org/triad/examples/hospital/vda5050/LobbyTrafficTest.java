@@ -133,6 +133,21 @@ class LobbyTrafficTest {
     }
 
     @Test
+    void nobodyIsSentOutOfTheWayOntoASpotBetweenTwoParkedCouriers() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        List<String> spots = new ArrayList<>(LobbyParking.spots());
+        spots.remove("lobby.1"); // between lobby.2 and lobby.14, 0.95 and 0.75 m off
+        for (int i = 0; i < spots.size(); i++) {
+            traffic.place("courier-" + i, spots.get(i));
+        }
+        traffic.place("courier-99", "c5");
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        assertEquals(Optional.of("lobby.1"), lobby.freeSpot("courier-99"));
+        assertEquals(Optional.empty(), lobby.spotApart("courier-99"));
+        assertEquals(List.of(), lobby.outOfTheWay("courier-99", "c5"), "it would stop short of lobby.1 and stand in the hall");
+    }
+
+    @Test
     void aCourierArrivingParksOnASpotWithNobodyBesideIt() {
         TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
         traffic.place("courier-1", "lobby.1");
