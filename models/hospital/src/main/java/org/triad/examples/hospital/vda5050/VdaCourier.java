@@ -72,7 +72,7 @@ public final class VdaCourier implements IRobot, FailureExplaining {
 
     /**
      * Off the ground floor's corridor onto a free parking spot in the lobby, a reserved drive, when the courier stands idle
-     * on a junction of it (the fleet calls this when its task ended, before it takes the next): a task that congestion
+     * on a junction of it or on the dock (the fleet calls this when its task ended, before it takes the next): a task that congestion
      * ended left its courier there, and it stood in the others' way while it rested and until its next task took it
      * on. Says where it went, or why not; empty when it stays (not on a junction, no traffic control, no free spot).
      */

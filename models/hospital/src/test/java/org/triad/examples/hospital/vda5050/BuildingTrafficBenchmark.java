@@ -226,8 +226,10 @@ public final class BuildingTrafficBenchmark {
                             if (charge && reserved && !LobbyParking.isPlace(from)) {
                                 // into the lobby first, onto a free spot, and queue for the dock there, as the fleet's
                                 // Recharge(lobby) does: queued on the way (at c4, the lobby's door), a courier held the ring's
-                                // node that the dock's holder needed to leave (session 14, admission runs)
-                                String spot = LobbyRoutes.of(traffic).freeSpot(agv.name()).orElse(null);
+                                // node that the dock's holder needed to leave (session 14, admission runs); from the hall's centre
+                                // too (a courier that backed off there): asking for the dock, a taken dead end, from there had it
+                                // step aside to the first spot by name, between two parked couriers, again and again
+                                String spot = LobbyRoutes.of(traffic).spotApart(agv.name()).orElse(null);
                                 if (spot != null) {
                                     List<String> in = path(map, from, spot);
                                     routes.incrementAndGet();

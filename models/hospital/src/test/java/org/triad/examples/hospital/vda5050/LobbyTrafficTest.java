@@ -126,6 +126,25 @@ class LobbyTrafficTest {
         assertEquals(List.of(), lobby.outOfTheWay("courier-2", "ward3"), "a room is out of the way");
         assertEquals(List.of(), lobby.outOfTheWay("courier-3", "lobby.2"), "parked already");
         assertEquals(List.of(), lobby.outOfTheWay("courier-1", null), "no state yet");
+        traffic.place("courier-4", LobbyParking.DOCK);
+        List<String> offTheDock = lobby.outOfTheWay("courier-4", LobbyParking.DOCK);
+        assertEquals(List.of(LobbyParking.DOCK, LobbyParking.HALL), offTheDock.subList(0, 2), "off the dock, free for the next");
+        assertTrue(LobbyParking.spots().contains(offTheDock.get(2)), offTheDock.toString());
+    }
+
+    @Test
+    void nobodyIsSentOutOfTheWayOntoASpotBetweenTwoParkedCouriers() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        List<String> spots = new ArrayList<>(LobbyParking.spots());
+        spots.remove("lobby.1"); // between lobby.2 and lobby.14, 0.95 and 0.75 m off
+        for (int i = 0; i < spots.size(); i++) {
+            traffic.place("courier-" + i, spots.get(i));
+        }
+        traffic.place("courier-99", "c5");
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        assertEquals(Optional.of("lobby.1"), lobby.freeSpot("courier-99"));
+        assertEquals(Optional.empty(), lobby.spotApart("courier-99"));
+        assertEquals(List.of(), lobby.outOfTheWay("courier-99", "c5"), "it would stop short of lobby.1 and stand in the hall");
     }
 
     @Test
