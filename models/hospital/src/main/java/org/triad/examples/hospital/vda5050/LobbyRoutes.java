@@ -149,7 +149,18 @@ public final class LobbyRoutes {
      * spot every 40 s). Parking to get out of the way, or to queue for the dock, is worth it only where the courier arrives.
      */
     public Optional<String> spotApart(String robot) {
-        return freeSpot(robot).filter(spot -> traffic.read(t -> !LobbyParking.besideTaken(spot, s -> !t.needing(t.map().node(s)).isEmpty())));
+        return freeSpot(robot).filter(spot -> traffic.read(t -> !LobbyParking.besideTaken(spot, taken(t, robot))));
+    }
+
+    /**
+     * Whether a place is taken for the robot: held, queued for, or on the way another robot waits to drive (its stretch and
+     * horizon: session 14, a courier waiting at c0 to park on lobby.1 found couriers parked either side of it when it came,
+     * and stopped short).
+     */
+    private static java.util.function.Predicate<String> taken(org.triad.building.traffic.ReservationTable t, String robot) {
+        java.util.Set<String> headedFor = new java.util.HashSet<>();
+        t.robots().stream().filter(r -> !r.equals(robot)).forEach(r -> headedFor.addAll(t.heading(r)));
+        return s -> !t.needing(t.map().node(s)).isEmpty() || headedFor.contains(s);
     }
 
     /**
@@ -183,7 +194,7 @@ public final class LobbyRoutes {
                 order.addAll(LobbyParking.spots());
                 // a spot beside a taken one is the last choice: the simulator's avoidance stops a courier arriving 0.75 m
                 // from a parked one short of its spot (the run that found it: four failed drives to the dock in a row)
-                java.util.function.Predicate<String> taken = s -> !t.needing(t.map().node(s)).isEmpty();
+                java.util.function.Predicate<String> taken = taken(t, robot);
                 List<String> free = order.stream().filter(taken.negate()).toList();
                 Optional<String> choice = free.stream().filter(s -> !LobbyParking.besideTaken(s, taken)).findFirst().or(() -> free.stream().findFirst());
                 if (home == null && choice.isPresent() && !homes.containsValue(choice.get())) {

@@ -148,6 +148,20 @@ class LobbyTrafficTest {
     }
 
     @Test
+    void nobodyParksOnOrBesideASpotAnotherCourierWaitsOnTheWayTo() {
+        TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
+        traffic.place("courier-1", "c4");
+        traffic.place("courier-2", "c1");
+        LobbyRoutes lobby = LobbyRoutes.of(traffic);
+        List<String> park = lobby.outOfTheWay("courier-2", "c1");
+        String spot = park.get(park.size() - 1);
+        // courier-2 waits at c1 for c4, held by courier-1, on its way to the spot
+        assertInstanceOf(Decision.Waiting.class, traffic.read(t -> t.request("courier-2", park)));
+        String other = lobby.freeSpot("courier-3").orElseThrow();
+        assertFalse(other.equals(spot) || LobbyParking.besideTaken(other, spot::equals), other + " is " + spot + " or beside it");
+    }
+
+    @Test
     void aCourierArrivingParksOnASpotWithNobodyBesideIt() {
         TrafficControl traffic = new TrafficControl(MAP, 120, line -> { });
         traffic.place("courier-1", "lobby.1");
