@@ -582,9 +582,9 @@ public final class FleetService implements AutoCloseable {
             }
             Long sent = sentToCharge.get(l.name());
             Optional<Long> running = l.currentTask();
-            if (sent != null && running.isPresent() && !running.get().equals(sent) && l.stopReason().isEmpty()) {
+            if (sent != null && running.isPresent() && !running.get().equals(sent) && l.stopReason().isEmpty() && low < policy.stopBelow()) {
                 String why = String.format(java.util.Locale.ROOT, "%srobot %s reports %.0f %% battery, below %.0f %%, while it works; queued again for it (task %d charges it)",
-                        CHARGING_STOP, l.name(), low, policy.below(), sent);
+                        CHARGING_STOP, l.name(), low, policy.stopBelow(), sent);
                 l.stop(why);
                 System.err.println("triad serve: task " + running.get() + ": " + why);
             }

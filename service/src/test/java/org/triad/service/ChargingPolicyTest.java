@@ -109,6 +109,21 @@ class ChargingPolicyTest {
     }
 
     @Test
+    void aStopThresholdAboveTheChargingThresholdIsAStartUpErrorAndOneBelowItIsTaken() {
+        java.util.Properties p = new java.util.Properties();
+        p.setProperty("charging.below", "50");
+        p.setProperty("charging.stopBelow", "60");
+        ServiceError e = assertThrows(ServiceError.class, () -> ChargingPolicy.of(p, "app.properties"));
+        assertEquals("app.properties: charging.stopBelow takes a percentage above 0 and up to charging.below (50), not '60'", e.getMessage());
+        p.setProperty("charging.stopBelow", "35");
+        ChargingPolicy policy = ChargingPolicy.of(p, "app.properties").orElseThrow();
+        assertEquals(50, policy.below());
+        assertEquals(35, policy.stopBelow());
+        p.remove("charging.stopBelow");
+        assertEquals(50, ChargingPolicy.of(p, "app.properties").orElseThrow().stopBelow(), "without it, a running task stops below charging.below");
+    }
+
+    @Test
     void aChargingTaskThatDoesNotFitTheModelsStopsTheStartWithTheReason() throws Exception {
         ServiceError e = assertThrows(ServiceError.class, () -> withProperties("charging.below=20\ncharging.task=Recharge\n",
                 () -> ServiceFixture.start(dir.resolve("db"), "dry:1")));

@@ -26,7 +26,9 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * mixed tasks (deliveries, guides, patrols, trips) submitted at once. Prints how each ended (completed, or
  * aborted/refused with the reasons), picks per item against completed deliveries (an object delivered
  * twice would show as more picks than deliveries), tasks per simulated hour, the dispatcher's time per
- * dispatch (median, p99) and the CPU seconds of broker, building and service. Arguments:
+ * dispatch (median, p99), the CPU seconds of broker, building and service, the orders the couriers accepted, the
+ * contact lines of the building's log, where the robots' and the tasks' time went ({@link TaskTimeSplit}) and the
+ * building's own clock as it stops (whether it kept the speed asked for). Arguments:
  * {@code [robots=10] [tasks=200] [speed=10] [mix=all|moves] [models=models/hospital/src/main/models] [minutes=30]} ({@code moves}: patrols and
  * trips only, for couriers that each have a simulation of their own, where items and people are not shared); see service/BENCHMARK.md.
  * It stops waiting when every robot is out of dispatch (3 aborts in a row each), or after {@code minutes} of wall time
