@@ -44,7 +44,9 @@ public final class HospitalTraffic {
     public static final String OUT_OF_THE_LOBBY = "outOfTheLobby";
     /**
      * Robots admitted out of the lobby at once, or 0 for no limit (system property {@code traffic.admitted}; none by default):
-     * the rest wait in the lobby, a hall for many, for one to come back. See {@link #map(HospitalFloor, int)}.
+     * the rest wait in the lobby, a hall for many, for one to come back. See {@link #map(HospitalFloor, int)}. Not on by
+     * default: re-measured in session 14 (building/README.md) it gave no fewer standstills, and a number fit for 10 couriers
+     * fills the lobby's spots at 20 (the rest wait there), so it would have to follow the fleet's size, which the map does not know.
      */
     public static final int ADMITTED = Integer.getInteger("traffic.admitted", 0);
     /** The prefix of the zone of a waypoint that another lane's way runs over (e.g. {@code passing-c0}). */
