@@ -267,7 +267,10 @@ public final class BuildingTrafficBenchmark {
                                     System.err.println("failed: " + agv.lastFailure().orElse("?"));
                                 }
                                 phase.put(agv.name(), "rests after a failed drive");
-                                sleep(1000);
+                                // in simulated seconds, so that a run does not depend on its speed: one wall second was 40
+                                // simulated at 40x, and 7 of the 8 standstills of the first 8-hour 5-courier run (session 14) were a
+                                // chain of waits ending at a courier resting on the ring
+                                sleep(Math.round(REST_AFTER_FAILURE_SECONDS * 1000 / speed));
                                 if (reserved && running.get()) {
                                     // off the ring into the lobby, as the fleet parks a courier whose task ended on a junction
                                     List<String> park = LobbyRoutes.of(traffic).outOfTheWay(agv.name(), where(agv));
@@ -383,6 +386,8 @@ public final class BuildingTrafficBenchmark {
      * by plain couriers nor asked to make way while a plain one can. More is the exception, which the staff's rescue shows.
      */
     static final double MARGIN_PERCENT = 12;
+    /** Simulated seconds a courier rests after a failed drive before it parks out of the way or takes its next task. */
+    static final double REST_AFTER_FAILURE_SECONDS = 10;
     /** Simulated seconds an empty courier stands before the staff swap its battery ({@link BatteryRescue}). */
     static final double RESCUE_AFTER_SECONDS = 300;
 
