@@ -98,27 +98,7 @@ class SharedWorldTest {
     void aRobotOfTheBuildingParksOutOfTheWayAsItsPlatformDoes() {
         SharedWorld world = new SharedWorld(schema, morning);
         DryRunWorld platform = new DryRunWorld(schema, morning);
-        FleetRobot own = new FleetRobot() {
-            @Override
-            public String name() {
-                return "p1";
-            }
-
-            @Override
-            public StateSource stateSource() {
-                return platform;
-            }
-
-            @Override
-            public ActionRunner actionRunner() {
-                return platform;
-            }
-
-            @Override
-            public java.util.Optional<String> parkOutOfTheWay() {
-                return java.util.Optional.of("parked out of the way: c4 -> lobby -> lobby.3");
-            }
-        };
+        FleetRobot own = new PlatformRobot(platform, java.util.Optional.of("parked out of the way: c4 -> lobby -> lobby.3"));
         // the wrapper used to answer with FleetRobot's default (stays): the benchmark's couriers never parked
         assertEquals(java.util.Optional.of("parked out of the way: c4 -> lobby -> lobby.3"), world.observing(own).parkOutOfTheWay());
     }
@@ -127,22 +107,7 @@ class SharedWorldTest {
     void whatAPlatformReportsChangedWhileItsRobotActedIsWrittenIntoTheBuilding() throws Exception {
         SharedWorld world = new SharedWorld(schema, morning);
         DryRunWorld platform = new DryRunWorld(schema, morning); // a platform with a world view of its own
-        FleetRobot own = new FleetRobot() {
-            @Override
-            public String name() {
-                return "p1";
-            }
-
-            @Override
-            public StateSource stateSource() {
-                return platform;
-            }
-
-            @Override
-            public ActionRunner actionRunner() {
-                return platform;
-            }
-        };
+        FleetRobot own = new PlatformRobot(platform, java.util.Optional.empty());
         FleetRobot member = world.observing(own);
         assertTrue(member == world.observing(member), "a member is not wrapped twice");
         ModelRobot other = world.modelRobot("r2");
@@ -220,5 +185,28 @@ class SharedWorldTest {
         assertThrows(IllegalStateException.class, () -> claims.take(2, "r2", Set.of("gauze")));
         claims.release(1);
         assertEquals(Optional.empty(), claims.holder(2, Set.of("gauze")));
+    }
+
+    /** Robot "p1" on a platform with a world view of its own, parking out of the way as {@code parked} says. */
+    private record PlatformRobot(DryRunWorld platform, java.util.Optional<String> parked) implements FleetRobot {
+        @Override
+        public String name() {
+            return "p1";
+        }
+
+        @Override
+        public StateSource stateSource() {
+            return platform;
+        }
+
+        @Override
+        public ActionRunner actionRunner() {
+            return platform;
+        }
+
+        @Override
+        public java.util.Optional<String> parkOutOfTheWay() {
+            return parked;
+        }
     }
 }
